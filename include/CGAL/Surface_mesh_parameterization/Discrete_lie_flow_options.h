@@ -1,0 +1,188 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_OPTIONS_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_OPTIONS_H
+
+#include <CGAL/Surface_mesh_parameterization/Error_code.h>
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \ingroup PkgSurfaceMeshParameterizationEnums
+/// Error codes of the Discrete Lie Flow parameterizers, continuing SMP's
+/// `Error_code` (they are returned as `Error_code` values; all fit in its range).
+enum Discrete_lie_flow_error_code
+{
+  ERROR_INITIAL_MAP_FOLDED = ERROR_WRONG_PARAMETER + 1, ///< the initial map has inverted or degenerate faces
+  ERROR_DEGENERATE_INPUT,        ///< non-finite coordinates or a zero-area face in the input
+  ERROR_INVALID_DENSITY,         ///< a density is zero, negative, not finite, or wrongly sized
+  ERROR_FLOW_STALLED,            ///< the flow could not improve the initial map at all
+  ERROR_FOLDS_ON_INPUT_CONNECTIVITY, ///< the result folds triangles of the input connectivity
+  ERROR_NOT_GENUS_0              ///< a spherical map needs a closed, connected, genus-0 mesh
+};
+
+/// \ingroup PkgSurfaceMeshParameterizationEnums
+/// The message of any `Error_code` value, including those of the Discrete Lie Flow.
+/// (A `switch`, so that the compiler reports a code without a message.)
+inline const char* discrete_lie_flow_error_message(int code)
+{
+  switch(code) {
+  case OK: return "Success";
+  case ERROR_EMPTY_MESH: return "Input mesh is empty";
+  case ERROR_NON_TRIANGULAR_MESH: return "Input mesh is not triangular";
+  case ERROR_NO_TOPOLOGICAL_DISC: return "Input mesh is not a topological disc";
+  case ERROR_NO_TOPOLOGICAL_BALL: return "Input mesh is not a topological ball";
+  case ERROR_BORDER_TOO_SHORT: return "This border parameterization requires a longer border";
+  case ERROR_NON_CONVEX_BORDER: return "This parameterization method requires a convex border";
+  case ERROR_CANNOT_SOLVE_LINEAR_SYSTEM: return "Cannot solve linear system";
+  case ERROR_NO_1_TO_1_MAPPING: return "Parameterization failed: no one-to-one mapping";
+  case ERROR_WRONG_PARAMETER: return "A method received an unexpected parameter";
+  case ERROR_INITIAL_MAP_FOLDED: return "The initial map has inverted or degenerate triangles";
+  case ERROR_DEGENERATE_INPUT: return "The input has non-finite coordinates or zero-area triangles";
+  case ERROR_INVALID_DENSITY: return "The density is zero, negative, not finite or wrongly sized";
+  case ERROR_FLOW_STALLED: return "The flow stalled before improving the initial map";
+  case ERROR_FOLDS_ON_INPUT_CONNECTIVITY: return "The map folds triangles of the input connectivity";
+  case ERROR_NOT_GENUS_0: return "Input mesh is not a closed genus-0 surface";
+  }
+  return "Unknown error";
+}
+
+/// The identifier of an `Error_code` value as used in reports (`"ok"`, `"ERROR_NO_TOPOLOGICAL_DISC"`, ...).
+inline const char* discrete_lie_flow_error_name(int code)
+{
+  switch(code) {
+  case OK: return "ok";
+  case ERROR_EMPTY_MESH: return "ERROR_EMPTY_MESH";
+  case ERROR_NON_TRIANGULAR_MESH: return "ERROR_NON_TRIANGULAR_MESH";
+  case ERROR_NO_TOPOLOGICAL_DISC: return "ERROR_NO_TOPOLOGICAL_DISC";
+  case ERROR_NO_TOPOLOGICAL_BALL: return "ERROR_NO_TOPOLOGICAL_BALL";
+  case ERROR_BORDER_TOO_SHORT: return "ERROR_BORDER_TOO_SHORT";
+  case ERROR_NON_CONVEX_BORDER: return "ERROR_NON_CONVEX_BORDER";
+  case ERROR_CANNOT_SOLVE_LINEAR_SYSTEM: return "ERROR_CANNOT_SOLVE_LINEAR_SYSTEM";
+  case ERROR_NO_1_TO_1_MAPPING: return "ERROR_NO_1_TO_1_MAPPING";
+  case ERROR_WRONG_PARAMETER: return "ERROR_WRONG_PARAMETER";
+  case ERROR_INITIAL_MAP_FOLDED: return "ERROR_INITIAL_MAP_FOLDED";
+  case ERROR_DEGENERATE_INPUT: return "ERROR_DEGENERATE_INPUT";
+  case ERROR_INVALID_DENSITY: return "ERROR_INVALID_DENSITY";
+  case ERROR_FLOW_STALLED: return "ERROR_FLOW_STALLED";
+  case ERROR_FOLDS_ON_INPUT_CONNECTIVITY: return "ERROR_FOLDS_ON_INPUT_CONNECTIVITY";
+  case ERROR_NOT_GENUS_0: return "ERROR_NOT_GENUS_0";
+  }
+  return "ERROR_UNKNOWN";
+}
+
+/// Which flow moves the domain vertices.
+enum class Discrete_lie_flow_mode
+{
+  /// Fold-free on the caller's triangles: DLF's Laplacian solve and certified
+  /// critical-root step applied to the Sobolev gradient of the barrier energy
+  /// D_area. Departs from the paper in the direction of motion. The default.
+  CERTIFIED,
+  /// The paper's algorithm: Poisson potential of the area mismatch, Delaunay
+  /// edge flips of the flowing domain mesh, steps certified on the flowing
+  /// triangulation. The reference; may fold the caller's triangles.
+  PAPER
+};
+
+/// What the boundary vertices slide on.
+enum class Discrete_lie_flow_border
+{
+  AUTOMATIC, ///< detected from the initial map: circle, square, or else free
+  CIRCLE,    ///< the circle through the initial boundary
+  SQUARE,    ///< the axis-aligned square of the initial boundary, corners fixed
+  FREE       ///< the initial boundary polyline (e.g. from LSCM or ARAP)
+};
+
+/// Why the flow stopped.
+enum class Discrete_lie_flow_stop_reason
+{
+  NOT_RUN,        ///< the flow did not start (an error occurred before)
+  CONVERGED,      ///< the area distortion reached the tolerance
+  PLATEAU,        ///< the area distortion stopped improving
+  STALLED,        ///< the step collapsed (a triangle keeps limiting it, or no step is acceptable)
+  ITERATION_CAP,  ///< the iteration cap was reached
+  INTERRUPTED     ///< the per-iteration callback asked to stop
+};
+
+inline const char* stop_reason_name(Discrete_lie_flow_stop_reason r)
+{
+  switch(r) {
+  case Discrete_lie_flow_stop_reason::NOT_RUN: return "not_run";
+  case Discrete_lie_flow_stop_reason::CONVERGED: return "converged";
+  case Discrete_lie_flow_stop_reason::PLATEAU: return "plateau";
+  case Discrete_lie_flow_stop_reason::STALLED: return "stalled";
+  case Discrete_lie_flow_stop_reason::ITERATION_CAP: return "iteration_cap";
+  case Discrete_lie_flow_stop_reason::INTERRUPTED: return "interrupted";
+  }
+  return "unknown";
+}
+
+/// What one iteration of the flow did; passed to the per-iteration callback.
+struct Discrete_lie_flow_iteration
+{
+  std::size_t iteration = 0;   ///< 1-based
+  double step = 0;             ///< the accepted λ
+  double critical_step = 0;    ///< min over triangles of the critical root along the direction
+  int limiting_face = -1;      ///< the triangle that attains it (index in the certified triangulation)
+  double d_area = 0;           ///< area distortion after the step (optimum 2)
+  double residual = 0;         ///< Σ_i (A_Ω(i) − A_M(i))² / (Σ_i A_Ω(i))², after the step
+  std::size_t backtracks = 0;  ///< step halvings before acceptance
+  std::size_t flips = 0;       ///< edge flips before the solve (paper mode)
+  double seconds = 0;          ///< elapsed since the flow started
+};
+
+/// Settings of the Discrete Lie Flow. Defaults are the measured choices.
+struct Discrete_lie_flow_options
+{
+  Discrete_lie_flow_mode mode = Discrete_lie_flow_mode::CERTIFIED;
+  Discrete_lie_flow_border border = Discrete_lie_flow_border::AUTOMATIC;
+  /// Stop when D_area − 2 ≤ tolerance.
+  double tolerance = 5e-3;
+  /// Hard cap on the number of iterations.
+  std::size_t max_iterations = 500;
+  /// Fraction μ ∈ (0, 1) of the smallest critical root that a step may take.
+  double mu = 0.5;
+  /// Largest step λ (paper mode: λ = min(step_cap, μ·λ_crit)); step 1 is the
+  /// full linearised correction, so larger steps overshoot near convergence.
+  double step_cap = 1.0;
+  /// Plateau test: stop when the best D_area improved by less than this
+  /// relative amount over `plateau_window` iterations.
+  double plateau_tolerance = 1e-5;
+  std::size_t plateau_window = 10;
+  /// Paper mode: flip the flowing mesh to Delaunay before each solve.
+  bool delaunay_flips = true;
+  /// Paper mode: lump the targets A_M on the flowing faces (our deviation
+  /// from Algorithm 1, whose literal reading — A_M lumped once on the input
+  /// faces — stalls as soon as a vertex changes valence). `false` gives the
+  /// literal reading, for the record.
+  bool lump_targets_on_flowing_faces = true;
+  /// Paper mode: a step is refused when a flowing face's normalised area
+  /// ratio falls below this (the degeneracy guard; orientation alone lets a
+  /// face collapse towards zero while staying "positive").
+  double degeneracy_ratio = 1e-8;
+  /// Stall detector: the same face limits this many consecutive steps while
+  /// the step shrinks, or a step needs more than `max_backtracks` halvings.
+  std::size_t stall_window = 25;
+  std::size_t max_backtracks = 60;
+  /// Fixed step instead of the adaptive one (0: adaptive). For the paper's
+  /// Table 2 experiment; a fixed step that would fold is reported as stalled.
+  double fixed_step = 0;
+  /// Per-face density ρ (> 0), indexed like the faces given to the flow;
+  /// empty means ρ ≡ 1. Targets are A_M(f) = ρ_f · area_M(f), normalised.
+  std::vector<double> face_density;
+  /// Keep the per-iteration history in the result.
+  bool record_history = false;
+  /// Called after every iteration; return false to stop the flow.
+  std::function<bool(const Discrete_lie_flow_iteration&)> callback;
+};
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,391 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_PARAMETERIZER_3_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_PARAMETERIZER_3_H
+
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certified_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/paper_flow.h>
+
+#include <CGAL/Surface_mesh_parameterization/Barycentric_mapping_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Error_code.h>
+#include <CGAL/Surface_mesh_parameterization/internal/kernel_traits.h>
+
+#include <CGAL/Default.h>
+#include <CGAL/Eigen_solver_traits.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseLU>
+#ifdef DLF_USE_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <set>
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \ingroup PkgSurfaceMeshParameterizationMethods
+/// What a run of the Discrete Lie Flow did. Shared by the copies of a
+/// parameterizer, so a named object passed by value to `parameterize()` still
+/// sees the report of its last run.
+struct Discrete_lie_flow_report
+{
+  Error_code status = OK;
+  std::string message;          ///< one line naming the offending element on error
+  Discrete_lie_flow_stop_reason stop_reason = Discrete_lie_flow_stop_reason::NOT_RUN;
+  Discrete_lie_flow_border border = Discrete_lie_flow_border::AUTOMATIC; ///< the border the flow used
+  std::size_t iterations = 0;
+  double initial_d_area = 0;    ///< on the certified triangulation, before the flow
+  double final_d_area = 0;      ///< on the certified triangulation (the flowing one in paper mode)
+  double final_residual = 0;    ///< Σ (A_Ω − A_M)² / (Σ A_Ω)² on that triangulation
+  std::size_t flips = 0;        ///< paper mode
+  std::size_t caller_inverted_faces = 0;   ///< the caller's triangles not positive under the final map (exact)
+  std::size_t flowing_inverted_faces = 0;  ///< the certified triangulation's, always 0 on success
+  std::size_t rejected_by_exact_check = 0; ///< trial steps the doubles accepted and the exact predicate refused
+  std::size_t factorizations = 0, symbolic_analyses = 0;
+  double seconds_initial = 0, seconds_flow = 0;
+  std::vector<Discrete_lie_flow_iteration> history; ///< when options.record_history
+  /// The final domain triangulation as triples of vertex indices (the
+  /// `VertexIndexMap` of the call); the input's in certified mode.
+  std::vector<std::array<int, 3> > domain_faces;
+  /// Per vertex index: the lumped areas A_M (target, scaled to the domain's
+  /// total) and A_Ω of the final map, on `domain_faces`.
+  std::vector<double> target_area, domain_area;
+};
+
+namespace internal {
+namespace dlf {
+#ifdef DLF_USE_CHOLMOD
+typedef Eigen::CholmodSupernodalLLT<Sparse_matrix, Eigen::Lower> Default_spd_solver;
+#else
+typedef Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Lower> Default_spd_solver;
+#endif
+} // namespace dlf
+} // namespace internal
+
+/// \ingroup PkgSurfaceMeshParameterizationMethods
+///
+/// The class `Discrete_lie_flow_parameterizer_3` computes an area-preserving
+/// (or density-prescribed) parameterization of a disk-topology triangle mesh
+/// by the Discrete Lie Flow (Zhang et al. 2019): starting from any flip-free
+/// initial map, the domain vertices flow until every triangle's domain area
+/// is proportional to its (density-weighted) surface area, with the step
+/// bounded by the closed-form critical roots and certified by CGAL's exact
+/// orientation predicate.
+///
+/// Two modes (`Discrete_lie_flow_options::mode`): `CERTIFIED` (default) keeps
+/// the caller's connectivity and never folds it; `PAPER` follows the paper,
+/// flipping edges of the flowing domain mesh.
+///
+/// \cgalModels `Parameterizer_3`
+///
+/// \tparam TriangleMesh_ a model of `FaceGraph`
+/// \tparam InitialParameterizer_ a model of `Parameterizer_3` giving a flip-free
+///   initial map; its border decides the domain (circle, square, or free).
+///   Default: Tutte (`Barycentric_mapping_parameterizer_3`) on the circle by arc length.
+/// \tparam SolverTraits_ `CGAL::Eigen_solver_traits<S>` with `S` an Eigen
+///   sparse SPD solver offering `analyzePattern()`/`factorize()`. Default:
+///   CHOLMOD's supernodal LLT when available, else `Eigen::SimplicialLDLT`.
+template <class TriangleMesh_, class InitialParameterizer_ = Default, class SolverTraits_ = Default>
+class Discrete_lie_flow_parameterizer_3
+{
+public:
+  typedef TriangleMesh_ Triangle_mesh;
+  typedef TriangleMesh_ TriangleMesh;
+  typedef typename Default::Get<InitialParameterizer_,
+    Barycentric_mapping_parameterizer_3<TriangleMesh_, Circular_border_arc_length_parameterizer_3<TriangleMesh_>,
+      Eigen_solver_traits<Eigen::SparseLU<Eigen_sparse_matrix<double>::EigenType, Eigen::COLAMDOrdering<int> > > > >::type
+    Initial_parameterizer;
+  typedef typename Default::Get<SolverTraits_,
+    Eigen_solver_traits<internal::dlf::Default_spd_solver> >::type Solver_traits;
+
+  typedef typename boost::graph_traits<Triangle_mesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<Triangle_mesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::graph_traits<Triangle_mesh>::face_descriptor face_descriptor;
+  typedef typename internal::Kernel_traits<Triangle_mesh>::Kernel Kernel;
+  typedef typename Kernel::Point_2 Point_2;
+
+  /// \param initial the parameterizer that gives the initial map
+  /// \param options flow settings (mode, tolerance, caps, density, callback)
+  /// \param solver_traits the sparse SPD solver
+  explicit Discrete_lie_flow_parameterizer_3(Initial_parameterizer initial = Initial_parameterizer(),
+                                             Discrete_lie_flow_options options = Discrete_lie_flow_options(),
+                                             Solver_traits solver_traits = Solver_traits())
+    : m_initial(std::make_shared<Initial_parameterizer>(initial)), m_options(options),
+      m_solver_traits(solver_traits), m_report(std::make_shared<Discrete_lie_flow_report>())
+  {}
+
+  Discrete_lie_flow_options& options() { return m_options; }
+  const Discrete_lie_flow_options& options() const { return m_options; }
+  Initial_parameterizer& initial_parameterizer() { return *m_initial; }
+
+  /// Sets a per-face density ρ > 0 (a readable property map, `face_descriptor`
+  /// → number). The domain area of a face becomes proportional to ρ·area.
+  template <class FaceDensityMap>
+  void set_face_density(FaceDensityMap density)
+  {
+    m_face_density = [density](face_descriptor f) { return double(get(density, f)); };
+  }
+  /// Sets a per-vertex density ρ > 0; a face takes the mean of its corners.
+  template <class VertexDensityMap>
+  void set_vertex_density(VertexDensityMap density)
+  {
+    m_vertex_density = [density](vertex_descriptor v) { return double(get(density, v)); };
+  }
+
+  /// The report of the last run (shared by all copies of this object).
+  const Discrete_lie_flow_report& report() const { return *m_report; }
+
+  /// Computes the initial map, then flows it. Fills `uvmap` only with a
+  /// positively oriented map (never NaN); on error, `uvmap` keeps whatever the
+  /// initial parameterizer wrote, and the report's message names the element.
+  ///
+  /// \pre `bhd` is a border halfedge of `mesh`; `vimap` indexes the vertices
+  /// of its connected component from 0.
+  template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>
+  Error_code parameterize(Triangle_mesh& mesh, halfedge_descriptor bhd, VertexUVmap uvmap,
+                          VertexIndexMap vimap, VertexParameterizedMap vpmap)
+  {
+    typedef std::chrono::steady_clock Clock;
+    namespace D = internal::dlf;
+    Discrete_lie_flow_report& R = *m_report;
+    R = Discrete_lie_flow_report();
+    auto fail = [&R](int code, const std::string& msg) {
+      R.status = Error_code(code);
+      R.message = msg.empty() ? std::string(discrete_lie_flow_error_message(code)) : msg;
+      return Error_code(code);
+    };
+    if(faces(mesh).empty()) return fail(ERROR_EMPTY_MESH, "");
+    if(bhd == boost::graph_traits<Triangle_mesh>::null_halfedge() || !is_border(bhd, mesh))
+      return fail(ERROR_NO_TOPOLOGICAL_DISC, "the given halfedge is not on a border");
+
+    // Gather the connected component of bhd, its faces and its border loop.
+    D::Disk_problem P;
+    std::vector<vertex_descriptor> vertex_of;
+    std::vector<face_descriptor> face_of;
+    Error_code code = gather(mesh, bhd, vimap, P, vertex_of, face_of);
+    if(code != OK) return code;
+
+    const Clock::time_point t0 = Clock::now();
+    code = m_initial->parameterize(mesh, bhd, uvmap, vimap, vpmap);
+    R.seconds_initial = std::chrono::duration<double>(Clock::now() - t0).count();
+    if(code != OK) return fail(code, std::string("initial map: ") + discrete_lie_flow_error_message(code));
+
+    std::vector<D::Vec2> uv(vertex_of.size());
+    for(std::size_t i = 0; i < vertex_of.size(); ++i) {
+      const Point_2 p = get(uvmap, vertex_of[i]);
+      uv[i] = {{ CGAL::to_double(p.x()), CGAL::to_double(p.y()) }};
+      if(!std::isfinite(uv[i][0]) || !std::isfinite(uv[i][1]))
+        return fail(ERROR_INITIAL_MAP_FOLDED, "initial map: vertex " + std::to_string(i) + " has a non-finite uv");
+    }
+    code = run_flow(P, uv);
+    if(code != OK) return code;
+    for(std::size_t i = 0; i < vertex_of.size(); ++i) put(uvmap, vertex_of[i], Point_2(uv[i][0], uv[i][1]));
+    return OK;
+  }
+
+  /// The flow alone, on index data: `uv` is a positively oriented initial
+  /// map of `P` (modified in place on success). Fills the report.
+  Error_code run_flow(internal::dlf::Disk_problem& P, std::vector<internal::dlf::Vec2>& uv)
+  {
+    namespace D = internal::dlf;
+    typedef std::chrono::steady_clock Clock;
+    Discrete_lie_flow_report& R = *m_report;
+    auto fail = [&R](int code, const std::string& msg) {
+      R.status = Error_code(code);
+      R.message = msg;
+      return Error_code(code);
+    };
+    // Orientation: the caller's faces must all be positive, or all negative
+    // (then we mirror the index order, not the map).
+    D::Orientation_count oc = D::count_orientations_2(uv, P.faces);
+    if(oc.inverted * 2 > P.faces.size()) {
+      for(D::Face& f : P.faces) std::swap(f[1], f[2]);
+      oc = D::count_orientations_2(uv, P.faces);
+    }
+    if(!oc.all_positive()) {
+      const D::Face& f = P.faces[std::size_t(oc.first_bad)];
+      std::ostringstream s;
+      s << "the initial map has " << oc.inverted << " inverted and " << oc.degenerate
+        << " degenerate triangles; first: face " << oc.first_bad << " (vertices " << f[0] << ", " << f[1] << ", " << f[2] << ")";
+      return fail(Error_code(ERROR_INITIAL_MAP_FOLDED), s.str());
+    }
+    std::vector<D::Vec2> loop(P.boundary.size());
+    for(std::size_t k = 0; k < loop.size(); ++k) loop[k] = uv[std::size_t(P.boundary[k])];
+    double twice = 0;
+    for(std::size_t k = 0; k < loop.size(); ++k) {
+      const D::Vec2 &a = loop[k], &b = loop[(k + 1) % loop.size()];
+      twice += a[0] * b[1] - a[1] * b[0];
+    }
+    if(twice < 0) {
+      std::reverse(P.boundary.begin(), P.boundary.end());
+      std::reverse(loop.begin(), loop.end());
+    }
+    D::Boundary_curve curve(loop, m_options.border);
+    R.border = curve.kind();
+
+    const Clock::time_point t0 = Clock::now();
+    D::Flow_outcome out;
+    std::vector<D::Face> domain = P.faces;
+    if(m_options.mode == Discrete_lie_flow_mode::PAPER)
+      out = D::paper_disk_flow(P, uv, curve, m_options, m_solver_traits.solver(), domain);
+    else
+      out = D::certified_disk_flow(P, uv, curve, m_options, m_solver_traits.solver());
+    R.seconds_flow = std::chrono::duration<double>(Clock::now() - t0).count();
+
+    R.stop_reason = out.stop_reason;
+    R.iterations = out.iterations;
+    R.initial_d_area = out.initial_d_area;
+    R.final_d_area = out.final_d_area;
+    R.final_residual = out.final_residual;
+    R.flips = out.flips;
+    R.rejected_by_exact_check = out.rejected_by_exact_check;
+    R.factorizations = out.factorizations;
+    R.symbolic_analyses = out.symbolic_analyses;
+    R.history = std::move(out.history);
+    R.caller_inverted_faces = D::count_orientations_2(uv, P.faces).inverted + D::count_orientations_2(uv, P.faces).degenerate;
+    const D::Orientation_count dc = D::count_orientations_2(uv, domain);
+    R.flowing_inverted_faces = dc.inverted + dc.degenerate;
+    R.domain_faces.assign(domain.begin(), domain.end());
+    std::vector<double> u, target_on_domain(domain.size());
+    D::signed_areas_2(uv, domain, u);
+    const std::vector<double> rho = D::vertex_density(P);
+    for(std::size_t f = 0; f < domain.size(); ++f) {
+      const D::Face& t = domain[f];
+      target_on_domain[f] = (m_options.mode == Discrete_lie_flow_mode::PAPER)
+        ? D::triangle_area_3(P.xyz[t[0]], P.xyz[t[1]], P.xyz[t[2]]) * (rho[t[0]] + rho[t[1]] + rho[t[2]]) / 3
+        : P.target[f];
+    }
+    D::lump_on_vertices(uv.size(), domain, u, R.domain_area);
+    D::lump_on_vertices(uv.size(), domain, target_on_domain, R.target_area);
+    double so = 0, st = 0;
+    for(std::size_t i = 0; i < uv.size(); ++i) { so += R.domain_area[i]; st += R.target_area[i]; }
+    for(double& a : R.target_area) a *= so / st;
+
+    if(R.flowing_inverted_faces != 0) // cannot happen: every accepted step is certified
+      return fail(Error_code(ERROR_NO_1_TO_1_MAPPING), "the flow produced inverted triangles");
+    if(out.iterations == 0 && out.stop_reason == Discrete_lie_flow_stop_reason::STALLED)
+      return fail(Error_code(ERROR_FLOW_STALLED), out.solver_failed ? "the linear solver failed on the initial map"
+                                                                     : "no step improves the initial map");
+    R.status = OK;
+    R.message = "Success";
+    return OK;
+  }
+
+private:
+  template <typename VertexIndexMap>
+  Error_code gather(const Triangle_mesh& mesh, halfedge_descriptor bhd, VertexIndexMap vimap,
+                    internal::dlf::Disk_problem& P, std::vector<vertex_descriptor>& vertex_of,
+                    std::vector<face_descriptor>& face_of)
+  {
+    namespace D = internal::dlf;
+    Discrete_lie_flow_report& R = *m_report;
+    auto fail = [&R](int code, const std::string& msg) { R.status = Error_code(code); R.message = msg; return Error_code(code); };
+    // Faces of the component, by a walk across non-border edges.
+    std::vector<face_descriptor> stack(1, face(opposite(bhd, mesh), mesh));
+    std::set<face_descriptor> seen(stack.begin(), stack.end());
+    while(!stack.empty()) {
+      const face_descriptor f = stack.back();
+      stack.pop_back();
+      face_of.push_back(f);
+      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh)) {
+        const halfedge_descriptor o = opposite(h, mesh);
+        if(is_border(o, mesh)) continue;
+        const face_descriptor g = face(o, mesh);
+        if(seen.insert(g).second) stack.push_back(g);
+      }
+    }
+    std::set<vertex_descriptor> vs;
+    for(face_descriptor f : face_of) {
+      if(degree(f, mesh) != 3)
+        return fail(ERROR_NON_TRIANGULAR_MESH, "face " + std::to_string(P.faces.size()) + " is not a triangle");
+      for(vertex_descriptor v : vertices_around_face(halfedge(f, mesh), mesh)) vs.insert(v);
+    }
+    const std::size_t n = vs.size();
+    vertex_of.assign(n, vertex_descriptor());
+    std::vector<bool> used(n, false);
+    for(vertex_descriptor v : vs) {
+      const long i = long(get(vimap, v));
+      if(i < 0 || std::size_t(i) >= n || used[std::size_t(i)])
+        return fail(ERROR_WRONG_PARAMETER, "the vertex index map does not number the component's vertices 0.." + std::to_string(n - 1));
+      used[std::size_t(i)] = true;
+      vertex_of[std::size_t(i)] = v;
+    }
+    const typename internal::Kernel_traits<Triangle_mesh>::PPM ppmap = get(vertex_point, mesh);
+    P.xyz.resize(n);
+    for(std::size_t i = 0; i < n; ++i) {
+      const auto& p = get(ppmap, vertex_of[i]);
+      P.xyz[i] = {{ CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) }};
+      if(!std::isfinite(P.xyz[i][0]) || !std::isfinite(P.xyz[i][1]) || !std::isfinite(P.xyz[i][2]))
+        return fail(Error_code(ERROR_DEGENERATE_INPUT), "vertex " + std::to_string(i) + " has a non-finite coordinate");
+    }
+    for(face_descriptor f : face_of) {
+      D::Face t;
+      int k = 0;
+      for(vertex_descriptor v : vertices_around_face(halfedge(f, mesh), mesh)) t[k++] = int(get(vimap, v));
+      P.faces.push_back(t);
+    }
+    // Targets: ρ_f · area_M(f).
+    P.target.resize(P.faces.size());
+    for(std::size_t f = 0; f < P.faces.size(); ++f) {
+      const D::Face& t = P.faces[f];
+      const double a = D::triangle_area_3(P.xyz[t[0]], P.xyz[t[1]], P.xyz[t[2]]);
+      if(!(a > 0) || !std::isfinite(a))
+        return fail(Error_code(ERROR_DEGENERATE_INPUT), "face " + std::to_string(f) + " (vertices " + std::to_string(t[0]) + ", " +
+                    std::to_string(t[1]) + ", " + std::to_string(t[2]) + ") has zero area");
+      double rho = 1;
+      if(m_face_density) rho = m_face_density(face_of[f]);
+      else if(m_vertex_density)
+        rho = (m_vertex_density(vertex_of[t[0]]) + m_vertex_density(vertex_of[t[1]]) + m_vertex_density(vertex_of[t[2]])) / 3;
+      else if(!m_options.face_density.empty()) {
+        if(m_options.face_density.size() != P.faces.size())
+          return fail(Error_code(ERROR_INVALID_DENSITY), "the density has " + std::to_string(m_options.face_density.size()) +
+                      " values for " + std::to_string(P.faces.size()) + " faces");
+        rho = m_options.face_density[f];
+      }
+      if(!(rho > 0) || !std::isfinite(rho))
+        return fail(Error_code(ERROR_INVALID_DENSITY), "the density of face " + std::to_string(f) + " is " + std::to_string(rho));
+      P.target[f] = rho * a;
+    }
+    // The border loop of bhd.
+    for(halfedge_descriptor h : halfedges_around_face(bhd, mesh)) P.boundary.push_back(int(get(vimap, target(h, mesh))));
+    if(P.boundary.size() < 3) return fail(ERROR_BORDER_TOO_SHORT, "the border has fewer than 3 vertices");
+    // A disk: V − E + F = 1 and a single border loop.
+    std::size_t border_edges = 0;
+    for(face_descriptor f : face_of)
+      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh))
+        if(is_border(opposite(h, mesh), mesh)) ++border_edges;
+    const std::size_t E = (3 * P.faces.size() + border_edges) / 2;
+    if(border_edges != P.boundary.size() || long(n) - long(E) + long(P.faces.size()) != 1)
+      return fail(ERROR_NO_TOPOLOGICAL_DISC, "the component has " + std::to_string(border_edges) + " border edges, " +
+                  std::to_string(P.boundary.size()) + " on the given loop, Euler characteristic " +
+                  std::to_string(long(n) - long(E) + long(P.faces.size())) + " (a disk has one loop and 1)");
+    return OK;
+  }
+
+  std::shared_ptr<Initial_parameterizer> m_initial;
+  Discrete_lie_flow_options m_options;
+  Solver_traits m_solver_traits;
+  std::function<double(face_descriptor)> m_face_density;
+  std::function<double(vertex_descriptor)> m_vertex_density;
+  std::shared_ptr<Discrete_lie_flow_report> m_report;
+};
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,290 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The certified mode on the caller's connectivity: DLF's Laplacian solve of
+// the current domain mesh and its critical-root step, applied to the Sobolev
+// gradient of the barrier energy E = D_area. Every accepted step keeps every
+// input triangle positively oriented (exact predicate) and lowers E, so the
+// last iterate is the best one and no face can collapse (each term
+// w_t / r_t ≤ E bounds the area ratio r_t from below).
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_CERTIFIED_FLOW_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_CERTIFIED_FLOW_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/boundary_curve.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/cotangent_laplacian.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_problem.h>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace dlf {
+
+/// The barrier energy in closed form. With u_t the signed domain areas,
+/// U = Σ u_t, c_t = (A_t / Σ A)², the area-weighted mean of r_t = (u_t/U)/(A_t/ΣA)
+/// is 1, hence E = Σ w_t (r_t + 1/r_t) = 1 + U Σ_t c_t / u_t and
+/// ∂E/∂u_t = Σ_s c_s/u_s − U c_t / u_t².
+class Area_barrier_energy
+{
+public:
+  explicit Area_barrier_energy(const std::vector<double>& target) : m_c(target.size())
+  {
+    double T = 0;
+    for(double a : target) T += a;
+    for(std::size_t t = 0; t < target.size(); ++t) m_c[t] = (target[t] / T) * (target[t] / T);
+  }
+
+  /// E(u), +∞ when a face is not positive.
+  double value(const std::vector<double>& u) const
+  {
+    double U = 0, K = 0;
+    for(std::size_t t = 0; t < u.size(); ++t) {
+      if(!(u[t] > 0)) return std::numeric_limits<double>::infinity();
+      U += u[t];
+      K += m_c[t] / u[t];
+    }
+    return 1 + U * K;
+  }
+
+  /// ∂E/∂u_t for every face (u all positive).
+  void derivatives(const std::vector<double>& u, std::vector<double>& dE) const
+  {
+    double U = 0, K = 0;
+    for(std::size_t t = 0; t < u.size(); ++t) { U += u[t]; K += m_c[t] / u[t]; }
+    dE.resize(u.size());
+    for(std::size_t t = 0; t < u.size(); ++t) dE[t] = K - U * m_c[t] / (u[t] * u[t]);
+  }
+
+private:
+  std::vector<double> m_c;
+};
+
+/// ∂E/∂p for a planar mesh from per-face ∂E/∂u_t:
+/// ∂u/∂p_k = ½ (y_{k+1} − y_{k+2}, x_{k+2} − x_{k+1}).
+inline void planar_position_gradient(const std::vector<Vec2>& uv, const std::vector<Face>& faces,
+                                     const std::vector<double>& dE, std::vector<Vec2>& g)
+{
+  g.assign(uv.size(), Vec2{{ 0, 0 }});
+  for(std::size_t t = 0; t < faces.size(); ++t) {
+    const Face& f = faces[t];
+    for(int k = 0; k < 3; ++k) {
+      const Vec2& a = uv[f[(k + 1) % 3]];
+      const Vec2& b = uv[f[(k + 2) % 3]];
+      g[f[k]][0] += dE[t] * 0.5 * (a[1] - b[1]);
+      g[f[k]][1] += dE[t] * 0.5 * (b[0] - a[0]);
+    }
+  }
+}
+
+/// The degrees of freedom of the planar flows: interior vertices move freely
+/// (two dofs), boundary vertices slide along the curve (one dof, along the
+/// tangent), fixed corners do not move.
+struct Planar_dofs
+{
+  std::vector<int> first;       ///< first dof of each vertex (−1: none)
+  std::vector<int> count;       ///< 0, 1 or 2
+  std::vector<int> boundary_of; ///< position in the boundary loop, −1 inside
+  int size = 0;
+
+  Planar_dofs(std::size_t n, const std::vector<int>& boundary, const Boundary_curve& curve)
+    : first(n, -1), count(n, 2), boundary_of(n, -1)
+  {
+    for(std::size_t k = 0; k < boundary.size(); ++k) {
+      boundary_of[boundary[k]] = int(k);
+      count[boundary[k]] = curve.is_fixed(k) ? 0 : 1;
+    }
+    for(std::size_t v = 0; v < n; ++v)
+      if(count[v] > 0) { first[v] = size; size += count[v]; }
+  }
+
+  /// Basis vector of the j-th dof of vertex v.
+  Vec2 basis(int v, int j, const Boundary_curve& curve) const
+  {
+    if(boundary_of[v] >= 0) return curve.tangent(std::size_t(boundary_of[v]));
+    return j == 0 ? Vec2{{ 1, 0 }} : Vec2{{ 0, 1 }};
+  }
+};
+
+/// Pᵀ (L ⊗ I₂) P: the stiffness matrix acting on both coordinates,
+/// restricted to the dofs.
+inline Sparse_matrix reduced_stiffness(const Sparse_matrix& L, const Planar_dofs& dofs,
+                                       const std::vector<Vec2>& basis)
+{
+  std::vector<Eigen::Triplet<double> > trip;
+  trip.reserve(std::size_t(L.nonZeros()) * 4);
+  for(int col = 0; col < L.outerSize(); ++col)
+    for(Sparse_matrix::InnerIterator it(L, col); it; ++it) {
+      const int a = int(it.row()), b = col;
+      for(int i = 0; i < dofs.count[a]; ++i)
+        for(int j = 0; j < dofs.count[b]; ++j) {
+          const Vec2& ea = basis[std::size_t(dofs.first[a] + i)];
+          const Vec2& eb = basis[std::size_t(dofs.first[b] + j)];
+          const double c = it.value() * (ea[0] * eb[0] + ea[1] * eb[1]);
+          if(c != 0 || a == b) trip.emplace_back(dofs.first[a] + i, dofs.first[b] + j, c);
+        }
+    }
+  Sparse_matrix K(dofs.size, dofs.size);
+  K.setFromTriplets(trip.begin(), trip.end());
+  K.makeCompressed();
+  return K;
+}
+
+/// Moves the domain by λ along the dof direction `d`; false when a boundary
+/// vertex leaves its piece of curve.
+inline bool planar_trial(const std::vector<Vec2>& uv, const Planar_dofs& dofs, const std::vector<Vec2>& basis,
+                         const Eigen::VectorXd& d, double lambda, const Boundary_curve& curve,
+                         std::vector<Vec2>& out)
+{
+  out = uv;
+  for(std::size_t v = 0; v < uv.size(); ++v) {
+    if(dofs.count[v] == 0) continue;
+    const int a = dofs.first[v];
+    if(dofs.boundary_of[v] >= 0) {
+      if(d[a] == 0) continue;
+      if(!curve.slide(std::size_t(dofs.boundary_of[v]), lambda * d[a], out[v])) return false;
+    } else {
+      out[v][0] += lambda * (d[a] * basis[a][0] + d[a + 1] * basis[a + 1][0]);
+      out[v][1] += lambda * (d[a] * basis[a][1] + d[a + 1] * basis[a + 1][1]);
+    }
+  }
+  return true;
+}
+
+/// Velocity of every vertex for dof direction `d` (linearised on the curve).
+inline void planar_velocity(std::size_t n, const Planar_dofs& dofs, const std::vector<Vec2>& basis,
+                            const Eigen::VectorXd& d, std::vector<Vec2>& vel)
+{
+  vel.assign(n, Vec2{{ 0, 0 }});
+  for(std::size_t v = 0; v < n; ++v)
+    for(int j = 0; j < dofs.count[v]; ++j) {
+      const int a = dofs.first[v] + j;
+      vel[v][0] += d[a] * basis[a][0];
+      vel[v][1] += d[a] * basis[a][1];
+    }
+}
+
+/// Smallest critical root over `faces` along `vel`; `limiting` receives its face.
+inline double smallest_critical_step(const std::vector<Vec2>& uv, const std::vector<Face>& faces,
+                                     const std::vector<Vec2>& vel, int& limiting)
+{
+  double best = infinite_step();
+  limiting = -1;
+  for(std::size_t t = 0; t < faces.size(); ++t) {
+    const Face& f = faces[t];
+    const double r = critical_step_2(uv[f[0]], uv[f[1]], uv[f[2]], vel[f[0]], vel[f[1]], vel[f[2]]);
+    if(r < best) { best = r; limiting = int(t); }
+  }
+  return best;
+}
+
+/// Runs the certified flow from the positively oriented `uv` (modified in
+/// place; always a certified map not worse than the start).
+template <class EigenSolver>
+Flow_outcome certified_disk_flow(const Disk_problem& P, std::vector<Vec2>& uv, Boundary_curve& curve,
+                                 const Discrete_lie_flow_options& opt, EigenSolver& eigen_solver)
+{
+  typedef std::chrono::steady_clock Clock;
+  const Clock::time_point start = Clock::now();
+  Flow_outcome out;
+  const std::size_t n = uv.size();
+  Planar_dofs dofs(n, P.boundary, curve);
+  Area_barrier_energy energy(P.target);
+  Pattern_reusing_solver<EigenSolver> solver(eigen_solver);
+
+  std::vector<double> u, dE, u_trial;
+  std::vector<Vec2> g, vel, trial, basis(std::size_t(dofs.size));
+  signed_areas_2(uv, P.faces, u);
+  double E = energy.value(u);
+  out.initial_d_area = out.final_d_area = E;
+  if(!std::isfinite(E)) { out.stop_reason = Discrete_lie_flow_stop_reason::STALLED; return out; }
+
+  std::vector<double> E_history(1, E);
+  double lambda_prev = infinite_step();
+  out.stop_reason = Discrete_lie_flow_stop_reason::ITERATION_CAP;
+  for(std::size_t it = 1; it <= opt.max_iterations; ++it) {
+    if(E - 2 <= opt.tolerance) { out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED; break; }
+    // Gradient of E in dof coordinates.
+    energy.derivatives(u, dE);
+    planar_position_gradient(uv, P.faces, dE, g);
+    for(std::size_t v = 0; v < n; ++v)
+      for(int j = 0; j < dofs.count[v]; ++j) basis[std::size_t(dofs.first[v] + j)] = dofs.basis(int(v), j, curve);
+    Eigen::VectorXd gr(dofs.size), d;
+    for(std::size_t v = 0; v < n; ++v)
+      for(int j = 0; j < dofs.count[v]; ++j) {
+        const int a = dofs.first[v] + j;
+        gr[a] = g[v][0] * basis[a][0] + g[v][1] * basis[a][1];
+      }
+    // Sobolev direction: K d = −g with K the stiffness of the current domain.
+    const Sparse_matrix K = reduced_stiffness(cotangent_stiffness(uv, P.faces), dofs, basis);
+    ++out.factorizations;
+    if(!solver.factorize(K) || !solver.solve(-gr, d)) { out.solver_failed = true; d = -gr; }
+    double slope = gr.dot(d);
+    if(!(slope < 0)) { d = -gr; slope = -gr.squaredNorm(); }
+    if(!(slope < 0)) { out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED; break; }
+
+    planar_velocity(n, dofs, basis, d, vel);
+    int limiting = -1;
+    const double lambda_crit = smallest_critical_step(uv, P.faces, vel, limiting);
+    double lambda = opt.fixed_step > 0 ? opt.fixed_step
+                                       : (std::min)(4 * lambda_prev, opt.mu * lambda_crit);
+    if(!std::isfinite(lambda)) lambda = 1;
+
+    // Armijo backtracking; the exact predicate has the last word.
+    bool accepted = false;
+    double E_trial = E;
+    std::size_t halvings = 0;
+    for(; halvings <= opt.max_backtracks; ++halvings, lambda *= 0.5) {
+      if(!planar_trial(uv, dofs, basis, d, lambda, curve, trial)) continue;
+      signed_areas_2(trial, P.faces, u_trial);
+      E_trial = energy.value(u_trial);
+      if(!(E_trial <= E + 1e-4 * lambda * slope)) continue;
+      if(!count_orientations_2(trial, P.faces, true).all_positive()) { ++out.rejected_by_exact_check; continue; }
+      accepted = true;
+      break;
+    }
+    if(!accepted) { out.stop_reason = Discrete_lie_flow_stop_reason::STALLED; break; }
+
+    for(std::size_t v = 0; v < n; ++v)
+      if(dofs.boundary_of[v] >= 0 && dofs.count[v] > 0) curve.commit(std::size_t(dofs.boundary_of[v]), lambda * d[dofs.first[v]]);
+    uv.swap(trial);
+    u.swap(u_trial);
+    E = E_trial;
+    lambda_prev = lambda;
+    out.iterations = it;
+    out.final_d_area = E;
+    E_history.push_back(E);
+
+    Discrete_lie_flow_iteration info;
+    info.iteration = it;
+    info.step = lambda;
+    info.critical_step = lambda_crit;
+    info.limiting_face = limiting;
+    info.d_area = E;
+    info.backtracks = halvings;
+    info.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if(opt.record_history || opt.callback) info.residual = area_residual(n, P.faces, u, P.target);
+    if(opt.record_history) out.history.push_back(info);
+    if(opt.callback && !opt.callback(info)) { out.stop_reason = Discrete_lie_flow_stop_reason::INTERRUPTED; break; }
+
+    if(E - 2 <= opt.tolerance) { out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED; break; }
+    if(E_history.size() > opt.plateau_window) {
+      const double old = E_history[E_history.size() - 1 - opt.plateau_window];
+      if(old - E < opt.plateau_tolerance * (E - 1)) { out.stop_reason = Discrete_lie_flow_stop_reason::PLATEAU; break; }
+    }
+  }
+  out.symbolic_analyses = solver.analyses();
+  out.final_residual = area_residual(n, P.faces, u, P.target);
+  return out;
+}
+
+} // namespace dlf
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,102 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The planar flow's input in index form (independent of the mesh type), the
+// outcome it reports, and the lumped area elements A_Ω and A_M.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_DISK_PROBLEM_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_DISK_PROBLEM_H
+
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/distortion.h>
+
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace dlf {
+
+/// A disk-topology triangle mesh, its targets, and its boundary loop.
+struct Disk_problem
+{
+  std::vector<Vec3> xyz;       ///< input positions
+  std::vector<Face> faces;     ///< input triangles, positively oriented in the initial map
+  std::vector<double> target;  ///< per face: ρ_f · area_M(f) > 0 (any common scale)
+  std::vector<int> boundary;   ///< the boundary loop, counter-clockwise in the domain
+};
+
+/// What a flow run reports besides the positions.
+struct Flow_outcome
+{
+  Discrete_lie_flow_stop_reason stop_reason = Discrete_lie_flow_stop_reason::NOT_RUN;
+  std::size_t iterations = 0;
+  double initial_d_area = 0;  ///< on the certified triangulation
+  double final_d_area = 0;
+  double final_residual = 0;
+  std::size_t flips = 0;      ///< paper mode: edge flips in total
+  std::size_t rejected_by_exact_check = 0; ///< trial steps the doubles accepted and the exact predicate refused
+  std::size_t factorizations = 0, symbolic_analyses = 0;
+  bool solver_failed = false;
+  std::vector<Discrete_lie_flow_iteration> history;
+};
+
+/// Lumped vertex areas: out[i] = (1/3) Σ_{f ∋ i} value[f].
+inline void lump_on_vertices(std::size_t n, const std::vector<Face>& faces, const std::vector<double>& value,
+                             std::vector<double>& out)
+{
+  out.assign(n, 0.);
+  for(std::size_t f = 0; f < faces.size(); ++f)
+    for(int k = 0; k < 3; ++k) out[faces[f][k]] += value[f] / 3;
+}
+
+inline double signed_area_2(const Vec2& a, const Vec2& b, const Vec2& c)
+{
+  return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+}
+
+inline void signed_areas_2(const std::vector<Vec2>& uv, const std::vector<Face>& faces, std::vector<double>& out)
+{
+  out.resize(faces.size());
+  for(std::size_t f = 0; f < faces.size(); ++f)
+    out[f] = signed_area_2(uv[faces[f][0]], uv[faces[f][1]], uv[faces[f][2]]);
+}
+
+/// Normalised squared mismatch Σ_i (A_Ω(i) − A_M(i))² / (Σ A_Ω)², with A_M
+/// scaled to the domain's total area.
+inline double area_residual(std::size_t n, const std::vector<Face>& faces, const std::vector<double>& dom_area,
+                            const std::vector<double>& target)
+{
+  std::vector<double> ao, am;
+  lump_on_vertices(n, faces, dom_area, ao);
+  lump_on_vertices(n, faces, target, am);
+  double so = 0, sm = 0;
+  for(std::size_t i = 0; i < n; ++i) { so += ao[i]; sm += am[i]; }
+  double r = 0;
+  for(std::size_t i = 0; i < n; ++i) { const double d = ao[i] - am[i] * so / sm; r += d * d; }
+  return r / (so * so);
+}
+
+/// D_area of domain areas `u` against targets (both per face; u > 0):
+/// exactly the metric `d_area` of DESIGN.md. +∞ if some u ≤ 0.
+inline double d_area_of(const std::vector<double>& u, const std::vector<double>& target)
+{
+  double U = 0, T = 0;
+  for(std::size_t f = 0; f < u.size(); ++f) {
+    if(!(u[f] > 0)) return std::numeric_limits<double>::infinity();
+    U += u[f]; T += target[f];
+  }
+  double e = 0;
+  for(std::size_t f = 0; f < u.size(); ++f) {
+    const double r = (u[f] / U) / (target[f] / T);
+    e += (target[f] / T) * (r + 1 / r);
+  }
+  return e;
+}
+
+} // namespace dlf
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

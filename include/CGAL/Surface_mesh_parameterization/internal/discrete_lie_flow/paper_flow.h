@@ -1,0 +1,204 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The paper's flow (Algorithm 1): Delaunay flips of the flowing domain mesh,
+// Neumann Poisson solve L h = A_Ω − A_M with the cotangent stiffness of the
+// flowing mesh, area-weighted vertex gradients, boundary sliding, and the
+// adaptive step μ·(smallest critical root), certified on the flowing
+// triangulation by exact predicates plus a degeneracy guard.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_PAPER_FLOW_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_PAPER_FLOW_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certified_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/edge_flips.h>
+
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace dlf {
+
+/// Per-vertex density, the area-weighted mean of the incident faces'
+/// ρ = target / area_M, used to weigh triangles created by flips.
+inline std::vector<double> vertex_density(const Disk_problem& P)
+{
+  std::vector<double> num(P.xyz.size(), 0.), den(P.xyz.size(), 0.);
+  for(std::size_t f = 0; f < P.faces.size(); ++f) {
+    const Face& t = P.faces[f];
+    const double a = triangle_area_3(P.xyz[t[0]], P.xyz[t[1]], P.xyz[t[2]]);
+    for(int k = 0; k < 3; ++k) { num[t[k]] += P.target[f]; den[t[k]] += a; }
+  }
+  for(std::size_t v = 0; v < num.size(); ++v) num[v] = den[v] > 0 ? num[v] / den[v] : 1.;
+  return num;
+}
+
+/// Runs the paper's flow from the positively oriented `uv`. On return, `uv`
+/// is the best iterate (lowest D_area on the flowing triangulation) and
+/// `flowing` its triangulation.
+template <class EigenSolver>
+Flow_outcome paper_disk_flow(const Disk_problem& P, std::vector<Vec2>& uv, Boundary_curve& curve,
+                             const Discrete_lie_flow_options& opt, EigenSolver& eigen_solver,
+                             std::vector<Face>& flowing)
+{
+  typedef std::chrono::steady_clock Clock;
+  const Clock::time_point start = Clock::now();
+  Flow_outcome out;
+  const std::size_t n = uv.size();
+  Planar_dofs dofs(n, P.boundary, curve);
+  Pattern_reusing_solver<EigenSolver> solver(eigen_solver);
+  Flip_triangulation tri(P.faces);
+
+  // Targets of the flowing faces: the input's as long as a face is unchanged,
+  // ρ × the 3D triangle between its vertices once a flip created it.
+  const std::vector<double> rho = vertex_density(P);
+  std::vector<double> target = P.target;
+  const double min_target = *std::min_element(P.target.begin(), P.target.end());
+  auto retarget = [&](int f) {
+    const Face& t = tri.faces[std::size_t(f)];
+    const double a = triangle_area_3(P.xyz[t[0]], P.xyz[t[1]], P.xyz[t[2]]) * (rho[t[0]] + rho[t[1]] + rho[t[2]]) / 3;
+    target[std::size_t(f)] = (std::max)(a, 1e-3 * min_target); // guard flat 3D triangles
+  };
+  std::vector<double> literal_AM;
+  lump_on_vertices(n, P.faces, P.target, literal_AM);
+
+  std::vector<double> u, AO, AM, u_trial;
+  signed_areas_2(uv, tri.faces, u);
+  double d_area = d_area_of(u, target);
+  out.initial_d_area = out.final_d_area = d_area;
+  std::vector<Vec2> best_uv = uv, trial;
+  std::vector<Face> best_faces = tri.faces;
+  std::vector<double> best_target = target;
+  double best = d_area;
+  std::vector<double> best_history(1, best);
+  std::vector<Vec2> basis(std::size_t(dofs.size)), vel(n);
+  int last_limiting = -1;
+  std::size_t same_limiting = 0;
+
+  out.stop_reason = Discrete_lie_flow_stop_reason::ITERATION_CAP;
+  for(std::size_t it = 1; it <= opt.max_iterations; ++it) {
+    if(best - 2 <= opt.tolerance) { out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED; break; }
+    std::size_t flips = 0;
+    if(opt.delaunay_flips)
+      flips = tri.make_delaunay(uv, [&](int f) { retarget(f); }, 100 * tri.faces.size() + 100);
+    out.flips += flips;
+    if(flips > 0) signed_areas_2(uv, tri.faces, u);
+
+    // Area elements and the Neumann Poisson problem L h = A_Ω − A_M.
+    lump_on_vertices(n, tri.faces, u, AO);
+    if(opt.lump_targets_on_flowing_faces) lump_on_vertices(n, tri.faces, target, AM);
+    else AM = literal_AM;
+    double so = 0, sm = 0;
+    for(std::size_t i = 0; i < n; ++i) { so += AO[i]; sm += AM[i]; }
+    Eigen::VectorXd rhs(Eigen::Index(n - 1));
+    for(std::size_t i = 1; i < n; ++i) rhs[Eigen::Index(i - 1)] = AO[i] - AM[i] * so / sm;
+    const Sparse_matrix L = cotangent_stiffness(uv, tri.faces);
+    // Pin h_0 = 0: drop row and column 0 (the right-hand side sums to zero).
+    const Sparse_matrix Lr = L.bottomRightCorner(Eigen::Index(n - 1), Eigen::Index(n - 1));
+    Eigen::VectorXd h_red;
+    ++out.factorizations;
+    if(!solver.factorize(Lr) || !solver.solve(rhs, h_red)) {
+      out.solver_failed = true;
+      out.stop_reason = Discrete_lie_flow_stop_reason::STALLED;
+      break;
+    }
+    std::vector<double> h(n, 0.);
+    for(std::size_t i = 1; i < n; ++i) h[i] = h_red[Eigen::Index(i - 1)];
+
+    // Vertex gradients: area-weighted mean of the faces' constant gradients.
+    std::vector<Vec2> grad(n, Vec2{{ 0, 0 }});
+    std::vector<double> wsum(n, 0.);
+    for(std::size_t t = 0; t < tri.faces.size(); ++t) {
+      const Face& f = tri.faces[t];
+      const Vec2 gt = p1_gradient(uv[f[0]], uv[f[1]], uv[f[2]], h[f[0]], h[f[1]], h[f[2]]);
+      for(int k = 0; k < 3; ++k) {
+        grad[f[k]][0] += u[t] * gt[0];
+        grad[f[k]][1] += u[t] * gt[1];
+        wsum[f[k]] += u[t];
+      }
+    }
+    // Displacement in dof form: boundary vertices keep the tangential part.
+    Eigen::VectorXd d(dofs.size);
+    for(std::size_t v = 0; v < n; ++v)
+      for(int j = 0; j < dofs.count[v]; ++j) {
+        const int a = dofs.first[v] + j;
+        basis[std::size_t(a)] = dofs.basis(int(v), j, curve);
+        d[a] = (grad[v][0] * basis[a][0] + grad[v][1] * basis[a][1]) / wsum[v];
+      }
+    planar_velocity(n, dofs, basis, d, vel);
+    int limiting = -1;
+    const double lambda_crit = smallest_critical_step(uv, tri.faces, vel, limiting);
+    double lambda = opt.fixed_step > 0 ? opt.fixed_step : (std::min)(opt.step_cap, opt.mu * lambda_crit);
+
+    // Shrink until every flowing face is positive (exact) and none collapses.
+    bool accepted = false;
+    std::size_t halvings = 0;
+    for(; halvings <= opt.max_backtracks; ++halvings, lambda *= 0.5) {
+      if(!planar_trial(uv, dofs, basis, d, lambda, curve, trial)) continue;
+      signed_areas_2(trial, tri.faces, u_trial);
+      double U = 0, T = 0;
+      bool ok = true;
+      for(std::size_t t = 0; t < u_trial.size() && ok; ++t) { ok = u_trial[t] > 0; U += u_trial[t]; T += target[t]; }
+      for(std::size_t t = 0; t < u_trial.size() && ok; ++t)
+        ok = (u_trial[t] / U) >= opt.degeneracy_ratio * (target[t] / T);
+      if(!ok) continue;
+      if(!count_orientations_2(trial, tri.faces, true).all_positive()) { ++out.rejected_by_exact_check; continue; }
+      accepted = true;
+      break;
+    }
+    // A fixed step that would fold is the paper's "collapse".
+    if(!accepted || (opt.fixed_step > 0 && halvings > 0)) {
+      out.stop_reason = Discrete_lie_flow_stop_reason::STALLED;
+      break;
+    }
+    for(std::size_t v = 0; v < n; ++v)
+      if(dofs.boundary_of[v] >= 0 && dofs.count[v] > 0) curve.commit(std::size_t(dofs.boundary_of[v]), lambda * d[dofs.first[v]]);
+    uv.swap(trial);
+    u.swap(u_trial);
+    d_area = d_area_of(u, target);
+    out.iterations = it;
+    if(d_area < best) { best = d_area; best_uv = uv; best_faces = tri.faces; best_target = target; }
+    best_history.push_back(best);
+
+    Discrete_lie_flow_iteration info;
+    info.iteration = it;
+    info.step = lambda;
+    info.critical_step = lambda_crit;
+    info.limiting_face = limiting;
+    info.d_area = d_area;
+    info.backtracks = halvings;
+    info.flips = flips;
+    info.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if(opt.record_history || opt.callback) info.residual = area_residual(n, tri.faces, u, target);
+    if(opt.record_history) out.history.push_back(info);
+    if(opt.callback && !opt.callback(info)) { out.stop_reason = Discrete_lie_flow_stop_reason::INTERRUPTED; break; }
+
+    if(best - 2 <= opt.tolerance) { out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED; break; }
+    // Stall: the same triangle limits the step again and again while the
+    // step is far below the cap (a vertex driven onto an edge).
+    if(limiting == last_limiting && lambda < 1e-3 * opt.step_cap) ++same_limiting; else same_limiting = 0;
+    last_limiting = limiting;
+    if(same_limiting >= opt.stall_window) { out.stop_reason = Discrete_lie_flow_stop_reason::STALLED; break; }
+    if(best_history.size() > opt.plateau_window) {
+      const double old = best_history[best_history.size() - 1 - opt.plateau_window];
+      if(old - best < opt.plateau_tolerance * (best - 1)) { out.stop_reason = Discrete_lie_flow_stop_reason::PLATEAU; break; }
+    }
+  }
+  uv = best_uv;
+  flowing = best_faces;
+  signed_areas_2(uv, flowing, u);
+  out.final_d_area = d_area_of(u, best_target);
+  out.final_residual = area_residual(n, flowing, u, best_target);
+  out.symbolic_analyses = solver.analyses();
+  return out;
+}
+
+} // namespace dlf
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
