@@ -58,6 +58,8 @@ struct Discrete_lie_flow_report
   std::size_t rejected_by_exact_check = 0; ///< trial steps the doubles accepted and the exact predicate refused
   std::size_t factorizations = 0, symbolic_analyses = 0;
   double seconds_initial = 0, seconds_flow = 0;
+  /// Split of seconds_flow: matrix assembly, factorisation and solve, step search and certification.
+  double seconds_assembly = 0, seconds_solve = 0, seconds_step = 0;
   std::vector<Discrete_lie_flow_iteration> history; ///< when options.record_history
   /// The final domain triangulation as triples of vertex indices (the
   /// `VertexIndexMap` of the call); the input's in certified mode.
@@ -257,6 +259,9 @@ public:
     R.factorizations = out.factorizations;
     R.symbolic_analyses = out.symbolic_analyses;
     R.history = std::move(out.history);
+    R.seconds_assembly = out.seconds_assembly;
+    R.seconds_solve = out.seconds_solve;
+    R.seconds_step = out.seconds_step;
     R.caller_inverted_faces = D::count_orientations_2(uv, P.faces).inverted + D::count_orientations_2(uv, P.faces).degenerate;
     const D::Orientation_count dc = D::count_orientations_2(uv, domain);
     R.flowing_inverted_faces = dc.inverted + dc.degenerate;

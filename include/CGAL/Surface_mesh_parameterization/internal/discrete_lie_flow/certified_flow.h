@@ -14,6 +14,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/boundary_curve.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/cotangent_laplacian.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_problem.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sobolev_direction.h>
 
 #include <chrono>
 #include <cmath>
@@ -110,30 +111,6 @@ struct Planar_dofs
   }
 };
 
-/// Pᵀ (L ⊗ I₂) P: the stiffness matrix acting on both coordinates,
-/// restricted to the dofs.
-inline Sparse_matrix reduced_stiffness(const Sparse_matrix& L, const Planar_dofs& dofs,
-                                       const std::vector<Vec2>& basis)
-{
-  std::vector<Eigen::Triplet<double> > trip;
-  trip.reserve(std::size_t(L.nonZeros()) * 4);
-  for(int col = 0; col < L.outerSize(); ++col)
-    for(Sparse_matrix::InnerIterator it(L, col); it; ++it) {
-      const int a = int(it.row()), b = col;
-      for(int i = 0; i < dofs.count[a]; ++i)
-        for(int j = 0; j < dofs.count[b]; ++j) {
-          const Vec2& ea = basis[std::size_t(dofs.first[a] + i)];
-          const Vec2& eb = basis[std::size_t(dofs.first[b] + j)];
-          const double c = it.value() * (ea[0] * eb[0] + ea[1] * eb[1]);
-          if(c != 0 || a == b) trip.emplace_back(dofs.first[a] + i, dofs.first[b] + j, c);
-        }
-    }
-  Sparse_matrix K(dofs.size, dofs.size);
-  K.setFromTriplets(trip.begin(), trip.end());
-  K.makeCompressed();
-  return K;
-}
-
 /// Moves the domain by λ along the dof direction `d`; false when a boundary
 /// vertex leaves its piece of curve.
 inline bool planar_trial(const std::vector<Vec2>& uv, const Planar_dofs& dofs, const std::vector<Vec2>& basis,
@@ -192,12 +169,13 @@ Flow_outcome certified_disk_flow(const Disk_problem& P, std::vector<Vec2>& uv, B
   const Clock::time_point start = Clock::now();
   Flow_outcome out;
   const std::size_t n = uv.size();
+  const double mu = opt.mu > 0 ? opt.mu : 0.8;
   Planar_dofs dofs(n, P.boundary, curve);
   Area_barrier_energy energy(P.target);
-  Pattern_reusing_solver<EigenSolver> solver(eigen_solver);
+  Split_sobolev_direction<EigenSolver> sobolev(dofs.boundary_of, eigen_solver);
 
   std::vector<double> u, dE, u_trial;
-  std::vector<Vec2> g, vel, trial, basis(std::size_t(dofs.size));
+  std::vector<Vec2> g, vel, trial, basis(std::size_t(dofs.size)), tangent(n), dv;
   signed_areas_2(uv, P.faces, u);
   double E = energy.value(u);
   out.initial_d_area = out.final_d_area = E;
@@ -219,10 +197,27 @@ Flow_outcome certified_disk_flow(const Disk_problem& P, std::vector<Vec2>& uv, B
         const int a = dofs.first[v] + j;
         gr[a] = g[v][0] * basis[a][0] + g[v][1] * basis[a][1];
       }
-    // Sobolev direction: K d = −g with K the stiffness of the current domain.
-    const Sparse_matrix K = reduced_stiffness(cotangent_stiffness(uv, P.faces), dofs, basis);
+    // Sobolev direction d = −M⁻¹ g, M the Dirichlet energy of the current domain.
+    Clock::time_point tic = Clock::now();
+    const Sparse_matrix L = cotangent_stiffness(uv, P.faces);
+    Clock::time_point toc = Clock::now();
+    out.seconds_assembly += std::chrono::duration<double>(toc - tic).count();
     ++out.factorizations;
-    if(!solver.factorize(K) || !solver.solve(-gr, d)) { out.solver_failed = true; d = -gr; }
+    for(std::size_t v = 0; v < n; ++v)
+      tangent[v] = (dofs.boundary_of[v] >= 0 && dofs.count[v] > 0) ? basis[std::size_t(dofs.first[v])] : Vec2{{ 0, 0 }};
+    if(!sobolev.factorize(L) || !sobolev.solve(g, tangent, dv)) {
+      out.solver_failed = true;
+      d = -gr;
+    } else {
+      d.resize(dofs.size);
+      for(std::size_t v = 0; v < n; ++v)
+        for(int j = 0; j < dofs.count[v]; ++j) {
+          const std::size_t a = std::size_t(dofs.first[v] + j);
+          d[Eigen::Index(a)] = dv[v][0] * basis[a][0] + dv[v][1] * basis[a][1];
+        }
+    }
+    tic = Clock::now();
+    out.seconds_solve += std::chrono::duration<double>(tic - toc).count();
     double slope = gr.dot(d);
     if(!(slope < 0)) { d = -gr; slope = -gr.squaredNorm(); }
     if(!(slope < 0)) { out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED; break; }
@@ -231,7 +226,7 @@ Flow_outcome certified_disk_flow(const Disk_problem& P, std::vector<Vec2>& uv, B
     int limiting = -1;
     const double lambda_crit = smallest_critical_step(uv, P.faces, vel, limiting);
     double lambda = opt.fixed_step > 0 ? opt.fixed_step
-                                       : (std::min)(4 * lambda_prev, opt.mu * lambda_crit);
+                                       : (std::min)(4 * lambda_prev, mu * lambda_crit);
     if(!std::isfinite(lambda)) lambda = 1;
 
     // Armijo backtracking; the exact predicate has the last word.
@@ -247,6 +242,7 @@ Flow_outcome certified_disk_flow(const Disk_problem& P, std::vector<Vec2>& uv, B
       accepted = true;
       break;
     }
+    out.seconds_step += std::chrono::duration<double>(Clock::now() - tic).count();
     if(!accepted) { out.stop_reason = Discrete_lie_flow_stop_reason::STALLED; break; }
 
     for(std::size_t v = 0; v < n; ++v)
@@ -277,7 +273,7 @@ Flow_outcome certified_disk_flow(const Disk_problem& P, std::vector<Vec2>& uv, B
       if(old - E < opt.plateau_tolerance * (E - 1)) { out.stop_reason = Discrete_lie_flow_stop_reason::PLATEAU; break; }
     }
   }
-  out.symbolic_analyses = solver.analyses();
+  out.symbolic_analyses = sobolev.analyses();
   out.final_residual = area_residual(n, P.faces, u, P.target);
   return out;
 }

@@ -38,6 +38,8 @@ struct Flow_outcome
   std::size_t rejected_by_exact_check = 0; ///< trial steps the doubles accepted and the exact predicate refused
   std::size_t factorizations = 0, symbolic_analyses = 0;
   bool solver_failed = false;
+  /// Time split of the iterations (seconds): assembly, factorisation + solve, step search.
+  double seconds_assembly = 0, seconds_solve = 0, seconds_step = 0;
   std::vector<Discrete_lie_flow_iteration> history;
 };
 

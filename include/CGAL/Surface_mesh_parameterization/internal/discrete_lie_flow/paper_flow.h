@@ -48,6 +48,7 @@ Flow_outcome paper_disk_flow(const Disk_problem& P, std::vector<Vec2>& uv, Bound
   const Clock::time_point start = Clock::now();
   Flow_outcome out;
   const std::size_t n = uv.size();
+  const double mu = opt.mu > 0 ? opt.mu : 0.5;
   Planar_dofs dofs(n, P.boundary, curve);
   Pattern_reusing_solver<EigenSolver> solver(eigen_solver);
   Flip_triangulation tri(P.faces);
@@ -131,7 +132,7 @@ Flow_outcome paper_disk_flow(const Disk_problem& P, std::vector<Vec2>& uv, Bound
     planar_velocity(n, dofs, basis, d, vel);
     int limiting = -1;
     const double lambda_crit = smallest_critical_step(uv, tri.faces, vel, limiting);
-    double lambda = opt.fixed_step > 0 ? opt.fixed_step : (std::min)(opt.step_cap, opt.mu * lambda_crit);
+    double lambda = opt.fixed_step > 0 ? opt.fixed_step : (std::min)(opt.step_cap, mu * lambda_crit);
 
     // Shrink until every flowing face is positive (exact) and none collapses.
     bool accepted = false;
