@@ -48,7 +48,7 @@ Flow_outcome paper_disk_flow(const Disk_problem& P, std::vector<Vec2>& uv, Bound
   const Clock::time_point start = Clock::now();
   Flow_outcome out;
   const std::size_t n = uv.size();
-  const double mu = opt.mu > 0 ? opt.mu : 0.5;
+  const double mu = opt.mu > 0 ? opt.mu : 0.8;
   Planar_dofs dofs(n, P.boundary, curve);
   Pattern_reusing_solver<EigenSolver> solver(eigen_solver);
   Flip_triangulation tri(P.faces);
