@@ -128,7 +128,7 @@ public:
                                              Discrete_lie_flow_options options = Discrete_lie_flow_options(),
                                              Solver_traits solver_traits = Solver_traits())
     : m_initial(std::make_shared<Initial_parameterizer>(initial)), m_options(options),
-      m_solver_traits(solver_traits), m_report(std::make_shared<Discrete_lie_flow_report>())
+      m_solver_traits(solver_traits), m_shared(std::make_shared<Shared_state>())
   {}
 
   Discrete_lie_flow_options& options() { return m_options; }
@@ -150,7 +150,33 @@ public:
   }
 
   /// The report of the last run (shared by all copies of this object).
-  const Discrete_lie_flow_report& report() const { return *m_report; }
+  const Discrete_lie_flow_report& report() const { return *m_shared->report; }
+
+  /// Writes the area elements of the last run into vertex property maps
+  /// (`vertex_descriptor` → number): `target` receives A_M(v), the lumped
+  /// (density-weighted) surface area scaled to the domain's total, `domain`
+  /// receives A_Ω(v) of the final map. On a `Surface_mesh`, pass maps from
+  /// `add_property_map<vertex_descriptor, double>("v:dlf_target_area")` etc.
+  template <class TargetAreaMap, class DomainAreaMap>
+  void area_elements(TargetAreaMap target, DomainAreaMap domain) const
+  {
+    const Discrete_lie_flow_report& R = *m_shared->report;
+    for(std::size_t i = 0; i < m_shared->vertex_of.size() && i < R.target_area.size(); ++i) {
+      put(target, m_shared->vertex_of[i], R.target_area[i]);
+      put(domain, m_shared->vertex_of[i], R.domain_area[i]);
+    }
+  }
+
+  /// The final domain triangulation of the last run, as vertex triples: the
+  /// input triangles in certified mode, the flowing (flipped) ones in paper mode.
+  std::vector<std::array<vertex_descriptor, 3> > domain_triangles() const
+  {
+    std::vector<std::array<vertex_descriptor, 3> > out;
+    for(const std::array<int, 3>& t : m_shared->report->domain_faces)
+      out.push_back({{ m_shared->vertex_of[std::size_t(t[0])], m_shared->vertex_of[std::size_t(t[1])],
+                       m_shared->vertex_of[std::size_t(t[2])] }});
+    return out;
+  }
 
   /// Computes the initial map, then flows it. Fills `uvmap` only with a
   /// positively oriented map (never NaN); on error, `uvmap` keeps whatever the
@@ -164,7 +190,7 @@ public:
   {
     typedef std::chrono::steady_clock Clock;
     namespace D = internal::dlf;
-    Discrete_lie_flow_report& R = *m_report;
+    Discrete_lie_flow_report& R = *m_shared->report;
     R = Discrete_lie_flow_report();
     auto fail = [&R](int code, const std::string& msg) {
       R.status = Error_code(code);
@@ -181,6 +207,7 @@ public:
     std::vector<face_descriptor> face_of;
     Error_code code = gather(mesh, bhd, vimap, P, vertex_of, face_of);
     if(code != OK) return code;
+    m_shared->vertex_of = vertex_of;
 
     const Clock::time_point t0 = Clock::now();
     code = m_initial->parameterize(mesh, bhd, uvmap, vimap, vpmap);
@@ -206,7 +233,7 @@ public:
   {
     namespace D = internal::dlf;
     typedef std::chrono::steady_clock Clock;
-    Discrete_lie_flow_report& R = *m_report;
+    Discrete_lie_flow_report& R = *m_shared->report;
     auto fail = [&R](int code, const std::string& msg) {
       R.status = Error_code(code);
       R.message = msg;
@@ -298,7 +325,7 @@ private:
                     std::vector<face_descriptor>& face_of)
   {
     namespace D = internal::dlf;
-    Discrete_lie_flow_report& R = *m_report;
+    Discrete_lie_flow_report& R = *m_shared->report;
     auto fail = [&R](int code, const std::string& msg) { R.status = Error_code(code); R.message = msg; return Error_code(code); };
     // Faces of the component, by a walk across non-border edges.
     std::vector<face_descriptor> stack(1, face(opposite(bhd, mesh), mesh));
@@ -387,7 +414,14 @@ private:
   Solver_traits m_solver_traits;
   std::function<double(face_descriptor)> m_face_density;
   std::function<double(vertex_descriptor)> m_vertex_density;
-  std::shared_ptr<Discrete_lie_flow_report> m_report;
+  // What the copies of a parameterizer share: the last run's report and the
+  // vertex of each index.
+  struct Shared_state
+  {
+    std::unique_ptr<Discrete_lie_flow_report> report{ new Discrete_lie_flow_report() };
+    std::vector<vertex_descriptor> vertex_of;
+  };
+  std::shared_ptr<Shared_state> m_shared;
 };
 
 } // namespace Surface_mesh_parameterization
