@@ -23,7 +23,6 @@ enum Discrete_lie_flow_error_code
   ERROR_DEGENERATE_INPUT,        ///< non-finite coordinates or a zero-area face in the input
   ERROR_INVALID_DENSITY,         ///< a density is zero, negative, not finite, or wrongly sized
   ERROR_FLOW_STALLED,            ///< the flow could not improve the initial map at all
-  ERROR_FOLDS_ON_INPUT_CONNECTIVITY, ///< the result folds triangles of the input connectivity
   ERROR_NOT_GENUS_0              ///< a spherical map needs a closed, connected, genus-0 mesh
 };
 
@@ -47,7 +46,6 @@ inline const char* discrete_lie_flow_error_message(int code)
   case ERROR_DEGENERATE_INPUT: return "The input has non-finite coordinates or zero-area triangles";
   case ERROR_INVALID_DENSITY: return "The density is zero, negative, not finite or wrongly sized";
   case ERROR_FLOW_STALLED: return "The flow stalled before improving the initial map";
-  case ERROR_FOLDS_ON_INPUT_CONNECTIVITY: return "The map folds triangles of the input connectivity";
   case ERROR_NOT_GENUS_0: return "Input mesh is not a closed genus-0 surface";
   }
   return "Unknown error";
@@ -71,7 +69,6 @@ inline const char* discrete_lie_flow_error_name(int code)
   case ERROR_DEGENERATE_INPUT: return "ERROR_DEGENERATE_INPUT";
   case ERROR_INVALID_DENSITY: return "ERROR_INVALID_DENSITY";
   case ERROR_FLOW_STALLED: return "ERROR_FLOW_STALLED";
-  case ERROR_FOLDS_ON_INPUT_CONNECTIVITY: return "ERROR_FOLDS_ON_INPUT_CONNECTIVITY";
   case ERROR_NOT_GENUS_0: return "ERROR_NOT_GENUS_0";
   }
   return "ERROR_UNKNOWN";
@@ -119,6 +116,26 @@ inline const char* stop_reason_name(Discrete_lie_flow_stop_reason r)
   case Discrete_lie_flow_stop_reason::STALLED: return "stalled";
   case Discrete_lie_flow_stop_reason::ITERATION_CAP: return "iteration_cap";
   case Discrete_lie_flow_stop_reason::INTERRUPTED: return "interrupted";
+  }
+  return "unknown";
+}
+
+inline const char* mode_name(Discrete_lie_flow_mode m)
+{
+  switch(m) {
+  case Discrete_lie_flow_mode::CERTIFIED: return "certified";
+  case Discrete_lie_flow_mode::PAPER: return "paper";
+  }
+  return "unknown";
+}
+
+inline const char* border_name(Discrete_lie_flow_border b)
+{
+  switch(b) {
+  case Discrete_lie_flow_border::AUTOMATIC: return "automatic";
+  case Discrete_lie_flow_border::CIRCLE: return "circle";
+  case Discrete_lie_flow_border::SQUARE: return "square";
+  case Discrete_lie_flow_border::FREE: return "free";
   }
   return "unknown";
 }
@@ -174,8 +191,10 @@ struct Discrete_lie_flow_options
   /// Fixed step instead of the adaptive one (0: adaptive). For the paper's
   /// Table 2 experiment; a fixed step that would fold is reported as stalled.
   double fixed_step = 0;
-  /// Per-face density ρ (> 0), indexed like the faces given to the flow;
-  /// empty means ρ ≡ 1. Targets are A_M(f) = ρ_f · area_M(f), normalised.
+  /// Per-face density ρ (> 0) in the order of `faces(mesh)` (for
+  /// `run_flow()`: of the problem's faces); empty means ρ ≡ 1. Targets are
+  /// A_M(f) = ρ_f · area_M(f), normalised. Property maps can be given with
+  /// `set_face_density()` / `set_vertex_density()` instead.
   std::vector<double> face_density;
   /// Keep the per-iteration history in the result.
   bool record_history = false;

@@ -5,6 +5,7 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_PARAMETERIZER_3_H
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certified_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/paper_flow.h>
 
@@ -27,6 +28,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <set>
 #include <chrono>
 #include <functional>
@@ -37,37 +39,6 @@
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
-
-/// \ingroup PkgSurfaceMeshParameterizationMethods
-/// What a run of the Discrete Lie Flow did. Shared by the copies of a
-/// parameterizer, so a named object passed by value to `parameterize()` still
-/// sees the report of its last run.
-struct Discrete_lie_flow_report
-{
-  Error_code status = OK;
-  std::string message;          ///< one line naming the offending element on error
-  Discrete_lie_flow_stop_reason stop_reason = Discrete_lie_flow_stop_reason::NOT_RUN;
-  Discrete_lie_flow_border border = Discrete_lie_flow_border::AUTOMATIC; ///< the border the flow used
-  std::size_t iterations = 0;
-  double initial_d_area = 0;    ///< on the certified triangulation, before the flow
-  double final_d_area = 0;      ///< on the certified triangulation (the flowing one in paper mode)
-  double final_residual = 0;    ///< Σ (A_Ω − A_M)² / (Σ A_Ω)² on that triangulation
-  std::size_t flips = 0;        ///< paper mode
-  std::size_t caller_inverted_faces = 0;   ///< the caller's triangles not positive under the final map (exact)
-  std::size_t flowing_inverted_faces = 0;  ///< the certified triangulation's, always 0 on success
-  std::size_t rejected_by_exact_check = 0; ///< trial steps the doubles accepted and the exact predicate refused
-  std::size_t factorizations = 0, symbolic_analyses = 0;
-  double seconds_initial = 0, seconds_flow = 0;
-  /// Split of seconds_flow: matrix assembly, factorisation and solve, step search and certification.
-  double seconds_assembly = 0, seconds_solve = 0, seconds_step = 0;
-  std::vector<Discrete_lie_flow_iteration> history; ///< when options.record_history
-  /// The final domain triangulation as triples of vertex indices (the
-  /// `VertexIndexMap` of the call); the input's in certified mode.
-  std::vector<std::array<int, 3> > domain_faces;
-  /// Per vertex index: the lumped areas A_M (target, scaled to the domain's
-  /// total) and A_Ω of the final map, on `domain_faces`.
-  std::vector<double> target_area, domain_area;
-};
 
 namespace internal {
 namespace dlf {
@@ -319,6 +290,15 @@ public:
   }
 
 private:
+  // A face named by the indices of its vertices, the only names every mesh type shares.
+  template <typename VertexIndexMap>
+  static std::string face_name(const Triangle_mesh& mesh, VertexIndexMap vimap, face_descriptor f)
+  {
+    std::string s = "(vertices";
+    for(vertex_descriptor v : vertices_around_face(halfedge(f, mesh), mesh)) s += " " + std::to_string(long(get(vimap, v)));
+    return s + ")";
+  }
+
   template <typename VertexIndexMap>
   Error_code gather(const Triangle_mesh& mesh, halfedge_descriptor bhd, VertexIndexMap vimap,
                     internal::dlf::Disk_problem& P, std::vector<vertex_descriptor>& vertex_of,
@@ -333,7 +313,6 @@ private:
     while(!stack.empty()) {
       const face_descriptor f = stack.back();
       stack.pop_back();
-      face_of.push_back(f);
       for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh)) {
         const halfedge_descriptor o = opposite(h, mesh);
         if(is_border(o, mesh)) continue;
@@ -341,11 +320,15 @@ private:
         if(seen.insert(g).second) stack.push_back(g);
       }
     }
+    // In the order of faces(mesh), so that domain faces follow the input.
+    for(face_descriptor f : faces(mesh))
+      if(seen.count(f)) face_of.push_back(f);
     std::set<vertex_descriptor> vs;
-    for(face_descriptor f : face_of) {
-      if(degree(f, mesh) != 3)
-        return fail(ERROR_NON_TRIANGULAR_MESH, "face " + std::to_string(P.faces.size()) + " is not a triangle");
-      for(vertex_descriptor v : vertices_around_face(halfedge(f, mesh), mesh)) vs.insert(v);
+    for(std::size_t k = 0; k < face_of.size(); ++k) {
+      std::size_t corners = 0;
+      for(vertex_descriptor v : vertices_around_face(halfedge(face_of[k], mesh), mesh)) { vs.insert(v); ++corners; }
+      if(corners != 3)
+        return fail(ERROR_NON_TRIANGULAR_MESH, "face " + face_name(mesh, vimap, face_of[k]) + " has " + std::to_string(corners) + " vertices");
     }
     const std::size_t n = vs.size();
     vertex_of.assign(n, vertex_descriptor());
@@ -371,26 +354,27 @@ private:
       for(vertex_descriptor v : vertices_around_face(halfedge(f, mesh), mesh)) t[k++] = int(get(vimap, v));
       P.faces.push_back(t);
     }
-    // Targets: ρ_f · area_M(f).
+    // Targets: ρ_f · area_M(f); options.face_density follows faces(mesh).
+    std::map<face_descriptor, std::size_t> position;
+    if(!m_face_density && !m_vertex_density && !m_options.face_density.empty()) {
+      for(face_descriptor f : faces(mesh)) position.emplace(f, position.size());
+      if(m_options.face_density.size() != position.size())
+        return fail(Error_code(ERROR_INVALID_DENSITY), "the density has " + std::to_string(m_options.face_density.size()) +
+                    " values for " + std::to_string(position.size()) + " faces");
+    }
     P.target.resize(P.faces.size());
     for(std::size_t f = 0; f < P.faces.size(); ++f) {
       const D::Face& t = P.faces[f];
       const double a = D::triangle_area_3(P.xyz[t[0]], P.xyz[t[1]], P.xyz[t[2]]);
       if(!(a > 0) || !std::isfinite(a))
-        return fail(Error_code(ERROR_DEGENERATE_INPUT), "face " + std::to_string(f) + " (vertices " + std::to_string(t[0]) + ", " +
-                    std::to_string(t[1]) + ", " + std::to_string(t[2]) + ") has zero area");
+        return fail(Error_code(ERROR_DEGENERATE_INPUT), "face " + face_name(mesh, vimap, face_of[f]) + " has zero area");
       double rho = 1;
       if(m_face_density) rho = m_face_density(face_of[f]);
       else if(m_vertex_density)
         rho = (m_vertex_density(vertex_of[t[0]]) + m_vertex_density(vertex_of[t[1]]) + m_vertex_density(vertex_of[t[2]])) / 3;
-      else if(!m_options.face_density.empty()) {
-        if(m_options.face_density.size() != P.faces.size())
-          return fail(Error_code(ERROR_INVALID_DENSITY), "the density has " + std::to_string(m_options.face_density.size()) +
-                      " values for " + std::to_string(P.faces.size()) + " faces");
-        rho = m_options.face_density[f];
-      }
+      else if(!m_options.face_density.empty()) rho = m_options.face_density[position[face_of[f]]];
       if(!(rho > 0) || !std::isfinite(rho))
-        return fail(Error_code(ERROR_INVALID_DENSITY), "the density of face " + std::to_string(f) + " is " + std::to_string(rho));
+        return fail(Error_code(ERROR_INVALID_DENSITY), "the density of face " + face_name(mesh, vimap, face_of[f]) + " is " + std::to_string(rho));
       P.target[f] = rho * a;
     }
     // The border loop of bhd.

@@ -31,14 +31,11 @@ public:
   Boundary_curve(const std::vector<Vec2>& pts, Kind kind)
   {
     if(kind == Kind::AUTOMATIC)
-      kind = fits_circle(pts) ? Kind::CIRCLE : (fits_square(pts) ? Kind::SQUARE : Kind::FREE);
+      kind = fits_square(pts) ? Kind::SQUARE : (fits_circle(pts) ? Kind::CIRCLE : Kind::FREE);
+    if(kind == Kind::CIRCLE && !fit_circle(pts, m_center, m_radius)) kind = Kind::FREE;
     m_kind = kind;
     const std::size_t n = pts.size();
     if(kind == Kind::CIRCLE) {
-      m_center = centroid(pts);
-      double r = 0;
-      for(const Vec2& p : pts) r += dist(p, m_center);
-      m_radius = r / double(n);
       m_length = 2 * M_PI * m_radius;
     } else if(kind == Kind::SQUARE) {
       double x0 = pts[0][0], y0 = pts[0][1], x1 = x0, y1 = y0;
@@ -139,10 +136,33 @@ public:
     return {{ a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]) }};
   }
 
+  /// Least-squares circle through `pts` (Kåsa's algebraic fit, centred
+  /// coordinates): exact for points on a circle, however unevenly spaced.
+  static bool fit_circle(const std::vector<Vec2>& pts, Vec2& center, double& radius)
+  {
+    const Vec2 m = centroid(pts);
+    double suu = 0, svv = 0, suv = 0, suuu = 0, svvv = 0, suvv = 0, svuu = 0;
+    for(const Vec2& p : pts) {
+      const double u = p[0] - m[0], v = p[1] - m[1];
+      suu += u * u; svv += v * v; suv += u * v;
+      suuu += u * u * u; svvv += v * v * v; suvv += u * v * v; svuu += v * u * u;
+    }
+    const double det = suu * svv - suv * suv;
+    if(!(std::abs(det) > 0)) return false;
+    const double bu = 0.5 * (suuu + suvv), bv = 0.5 * (svvv + svuu);
+    const double uc = (bu * svv - bv * suv) / det, vc = (suu * bv - suv * bu) / det;
+    center = {{ m[0] + uc, m[1] + vc }};
+    double r = 0;
+    for(const Vec2& p : pts) r += dist(p, center);
+    radius = r / double(pts.size());
+    return std::isfinite(radius) && radius > 0;
+  }
+
   static bool fits_circle(const std::vector<Vec2>& pts)
   {
-    if(pts.size() < 3) return false;
-    const Vec2 c = centroid(pts);
+    Vec2 c;
+    double r;
+    if(pts.size() < 3 || !fit_circle(pts, c, r)) return false;
     double rmin = dist(pts[0], c), rmax = rmin;
     for(const Vec2& p : pts) { rmin = (std::min)(rmin, dist(p, c)); rmax = (std::max)(rmax, dist(p, c)); }
     return rmax > 0 && rmax - rmin <= 1e-7 * rmax;

@@ -58,11 +58,11 @@ Flow_outcome paper_disk_flow(const Disk_problem& P, std::vector<Vec2>& uv, Bound
   const std::vector<double> rho = vertex_density(P);
   std::vector<double> target = P.target;
   const double min_target = *std::min_element(P.target.begin(), P.target.end());
-  auto retarget = [&](int f) {
-    const Face& t = tri.faces[std::size_t(f)];
+  auto target_of = [&](const Face& t) {
     const double a = triangle_area_3(P.xyz[t[0]], P.xyz[t[1]], P.xyz[t[2]]) * (rho[t[0]] + rho[t[1]] + rho[t[2]]) / 3;
-    target[std::size_t(f)] = (std::max)(a, 1e-3 * min_target); // guard flat 3D triangles
+    return (std::max)(a, 1e-3 * min_target); // guard flat 3D triangles
   };
+  auto retarget = [&](int f) { target[std::size_t(f)] = target_of(tri.faces[std::size_t(f)]); };
   std::vector<double> literal_AM;
   lump_on_vertices(n, P.faces, P.target, literal_AM);
 
@@ -189,7 +189,13 @@ Flow_outcome paper_disk_flow(const Disk_problem& P, std::vector<Vec2>& uv, Bound
     }
   }
   uv = best_uv;
-  flowing = best_faces;
+  // The best triangulation was made Delaunay for the positions before its
+  // step; flip once more so that the returned one is Delaunay where it is.
+  Flip_triangulation last(best_faces);
+  if(opt.delaunay_flips)
+    out.flips += last.make_delaunay(uv, [&](int f) { best_target[std::size_t(f)] = target_of(last.faces[std::size_t(f)]); },
+                                    100 * last.faces.size() + 100);
+  flowing = last.faces;
   signed_areas_2(uv, flowing, u);
   out.final_d_area = d_area_of(u, best_target);
   out.final_residual = area_residual(n, flowing, u, best_target);

@@ -1,0 +1,202 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include "arguments.h"
+#include "cli_error.h"
+
+#include <boost/program_options.hpp>
+
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+namespace dlf_cli {
+
+namespace po = boost::program_options;
+namespace SMP = CGAL::Surface_mesh_parameterization;
+
+namespace {
+
+// Long options only by their full name: a guessed prefix would silently
+// change meaning when an option is added.
+const int parser_style = po::command_line_style::default_style & ~po::command_line_style::allow_guessing;
+
+void require_one_of(const std::string& option, const std::string& value, const std::vector<std::string>& allowed)
+{
+  for(const std::string& a : allowed)
+    if(value == a) return;
+  std::string list;
+  for(std::size_t k = 0; k < allowed.size(); ++k) list += (k == 0 ? "" : k + 1 == allowed.size() ? " or " : ", ") + allowed[k];
+  throw Cli_error("invalid value '" + value + "' for --" + option + " (expected " + list + ")");
+}
+
+// Parses, turning Boost's exceptions into one-line usage errors.
+po::variables_map parse(const std::string& command, const std::vector<std::string>& args,
+                        const po::options_description& visible, const std::string& positional_name)
+{
+  po::options_description all;
+  all.add(visible);
+  all.add_options()(positional_name.c_str(), po::value<std::vector<std::string> >());
+  po::positional_options_description positional;
+  positional.add(positional_name.c_str(), -1);
+  po::variables_map vm;
+  try {
+    po::store(po::command_line_parser(args).options(all).positional(positional).style(parser_style).run(), vm);
+    po::notify(vm);
+  } catch(const po::error& e) {
+    throw Cli_error(std::string(e.what()) + " (see 'dlf " + command + " --help')");
+  }
+  return vm;
+}
+
+std::vector<std::string> positionals(const po::variables_map& vm, const std::string& name)
+{
+  return vm.count(name) ? vm[name].as<std::vector<std::string> >() : std::vector<std::string>();
+}
+
+void set_verbosity(const po::variables_map& vm, Verbosity& verbosity)
+{
+  if(vm.count("quiet") && vm.count("verbose")) throw Cli_error("--quiet and --verbose exclude each other");
+  if(vm.count("quiet")) verbosity = Verbosity::QUIET;
+  if(vm.count("verbose")) verbosity = Verbosity::VERBOSE;
+}
+
+const char* disk_examples =
+  "Examples:\n"
+  "  dlf disk face.off -o face_uv.obj\n"
+  "      area-preserving map onto a disk (Tutte initial map, certified flow)\n"
+  "  dlf disk face.off -o face_uv.obj --border square --svg face.svg --report face.json\n"
+  "      onto a square, with a picture of the area ratios and a JSON report\n"
+  "  dlf disk face.off -o face_uv.obj --init lscm\n"
+  "      free border: the border keeps the shape of the LSCM map\n"
+  "  dlf disk face.off --mode paper --history --report paper.json --domain-mesh flipped.obj\n"
+  "      the paper's algorithm (edge flips), its per-iteration history and flipped triangulation\n"
+  "  dlf score face.off face_uv.obj\n"
+  "      the distortion of a map written by 'dlf disk' (or any per-vertex uv OBJ)\n"
+  "\n"
+  "Exit status: 0 success, 1 usage error or unsuitable input (unreadable, not a disk,\n"
+  "degenerate triangles, ...), 2 the flow failed (e.g. the initial map folds). When the\n"
+  "parameterizer reports an error, only the report is written, with the error's status.\n";
+
+} // namespace
+
+void print_main_help(std::ostream& out)
+{
+  out << "dlf: Discrete Lie Flow, area-preserving parameterization (CGAL Surface_mesh_parameterization)\n"
+         "\n"
+         "Usage:\n"
+         "  dlf disk INPUT [options]        map a disk-topology triangle mesh onto the plane\n"
+         "  dlf score MESH PARAM.obj        measure the distortion of an existing map\n"
+         "  dlf sphere INPUT [options]      map a closed genus-0 mesh onto the sphere (not available yet)\n"
+         "\n"
+         "'dlf COMMAND --help' lists the options of a command.\n\n"
+      << disk_examples;
+}
+
+bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s)
+{
+  const SMP::Discrete_lie_flow_options defaults;
+  double tolerance = defaults.tolerance, mu = defaults.mu;
+  long long max_iterations = (long long)(defaults.max_iterations);
+
+  po::options_description o("Options");
+  o.add_options()
+    ("help,h", "show this help")
+    ("output,o", po::value<std::string>(&s.output)->value_name("OUT.obj"),
+     "write the map: v = input positions, vt = uv (same vertex order), f a/a b/b c/c")
+    ("mode", po::value<std::string>(&s.mode)->value_name("M")->default_value("certified"),
+     "certified: never folds the input triangles; paper: the paper's flow with edge flips")
+    ("init", po::value<std::string>(&s.init)->value_name("I")->default_value("tutte"),
+     "initial map: tutte, mvc (mean value), dcp (discrete conformal) with a circle or square border; "
+     "lscm, arap with a free border")
+    ("border", po::value<std::string>(&s.border)->value_name("B"),
+     "circle or square (tutte, mvc, dcp; default circle), or free: the border slides along the initial "
+     "map's border (the only choice, and the default, for lscm and arap)")
+    ("report", po::value<std::string>(&s.report)->value_name("R.json"), "write a JSON report (status, metrics, timings)")
+    ("domain-mesh", po::value<std::string>(&s.domain_mesh)->value_name("DOMAIN.obj"),
+     "write the final domain triangulation (differs from the input's in paper mode)")
+    ("svg", po::value<std::string>(&s.svg)->value_name("LAYOUT.svg"),
+     "draw the uv layout, triangles coloured by area ratio")
+    ("tolerance", po::value<double>(&tolerance)->value_name("X")->default_value(tolerance),
+     "stop when d_area - 2 <= X")
+    ("max-iterations", po::value<long long>(&max_iterations)->value_name("N")->default_value(max_iterations),
+     "iteration cap")
+    ("mu", po::value<double>(&mu)->value_name("X"),
+     "fraction in (0, 1) of the smallest critical step that a step may take (default: the mode's own)")
+    ("literal-targets", "paper mode: lump the target areas once on the input triangles (Algorithm 1 read literally)")
+    ("no-flips", "paper mode: no Delaunay edge flips")
+    ("history", "add the per-iteration history to the report")
+    ("quiet,q", "print nothing on success")
+    ("verbose,v", "print one line per iteration");
+
+  const po::variables_map vm = parse("disk", args, o, "input");
+  if(vm.count("help")) {
+    std::cout << "Usage: dlf disk INPUT [options]\n\n"
+                 "Area-preserving parameterization of a disk-topology triangle mesh (any format CGAL\n"
+                 "reads: OFF, OBJ, PLY, STL) by the Discrete Lie Flow.\n\n"
+              << o << "\n" << disk_examples;
+    return false;
+  }
+  const std::vector<std::string> inputs = positionals(vm, "input");
+  if(inputs.empty()) throw Cli_error("missing INPUT mesh (see 'dlf disk --help')");
+  if(inputs.size() > 1) throw Cli_error("one INPUT mesh expected, got '" + inputs[0] + "' and '" + inputs[1] + "'");
+  s.input = inputs[0];
+  set_verbosity(vm, s.verbosity);
+
+  require_one_of("mode", s.mode, { "certified", "paper" });
+  require_one_of("init", s.init, { "tutte", "mvc", "dcp", "lscm", "arap" });
+  if(s.border.empty()) s.border = has_fixed_border(s.init) ? "circle" : "free";
+  require_one_of("border", s.border, { "circle", "square", "free" });
+  if(!has_fixed_border(s.init) && s.border != "free")
+    throw Cli_error("--border " + s.border + " needs a fixed-border initial map (--init tutte, mvc or dcp); " +
+                    s.init + " gives a free border");
+  if(!(tolerance >= 0) || !std::isfinite(tolerance)) throw Cli_error("--tolerance must be a number >= 0");
+  if(vm.count("mu") && !(mu > 0 && mu < 1)) throw Cli_error("--mu must be in (0, 1)");
+  if(max_iterations < 0) throw Cli_error("--max-iterations must be >= 0");
+  if(s.mode != "paper") {
+    if(vm.count("literal-targets")) throw Cli_error("--literal-targets applies to --mode paper only");
+    if(vm.count("no-flips")) throw Cli_error("--no-flips applies to --mode paper only");
+  }
+
+  SMP::Discrete_lie_flow_options& opt = s.options;
+  opt.mode = s.mode == "paper" ? SMP::Discrete_lie_flow_mode::PAPER : SMP::Discrete_lie_flow_mode::CERTIFIED;
+  opt.border = s.border == "circle" ? SMP::Discrete_lie_flow_border::CIRCLE
+             : s.border == "square" ? SMP::Discrete_lie_flow_border::SQUARE : SMP::Discrete_lie_flow_border::FREE;
+  opt.tolerance = tolerance;
+  opt.mu = mu;
+  opt.max_iterations = std::size_t(max_iterations);
+  opt.lump_targets_on_flowing_faces = vm.count("literal-targets") == 0;
+  opt.delaunay_flips = vm.count("no-flips") == 0;
+  opt.record_history = vm.count("history") != 0;
+  return true;
+}
+
+bool parse_score_arguments(const std::vector<std::string>& args, Score_settings& s)
+{
+  po::options_description o("Options");
+  o.add_options()
+    ("help,h", "show this help")
+    ("report", po::value<std::string>(&s.report)->value_name("R.json"), "write the metrics as JSON")
+    ("quiet,q", "print nothing on success")
+    ("verbose,v", "same as the default");
+  const po::variables_map vm = parse("score", args, o, "files");
+  if(vm.count("help")) {
+    std::cout << "Usage: dlf score MESH PARAM.obj [--report R.json]\n\n"
+                 "Distortion metrics (d_area, arap, symmetric Dirichlet, log area ratio, inverted and\n"
+                 "degenerate faces, smallest angle) of the map of MESH's triangles given by PARAM.obj:\n"
+                 "its 'vt' lines, one per MESH vertex in order (as 'dlf disk' writes them), or, without\n"
+                 "'vt', the x and y of its 'v' lines when all z are 0.\n\n"
+              << o;
+    return false;
+  }
+  const std::vector<std::string> files = positionals(vm, "files");
+  if(files.size() != 2)
+    throw Cli_error("expected MESH and PARAM.obj, got " + std::to_string(files.size()) + " file name" +
+                    (files.size() == 1 ? "" : "s") + " (see 'dlf score --help')");
+  s.mesh = files[0];
+  s.parameterization = files[1];
+  set_verbosity(vm, s.verbosity);
+  return true;
+}
+
+} // namespace dlf_cli

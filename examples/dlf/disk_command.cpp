@@ -1,0 +1,186 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// `dlf disk`: read, check, flow, measure, write (all outputs or none), tell.
+
+#include "arguments.h"
+#include "cli_error.h"
+#include "commands.h"
+#include "disk_run.h"
+#include "metrics.h"
+#include "obj_io.h"
+#include "output_files.h"
+#include "svg_layout.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace dlf_cli {
+
+namespace {
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+// Insertion order, so that a report reads top-down: status first, history last.
+using json = nlohmann::ordered_json;
+
+const char* border_name(SMP::Discrete_lie_flow_border b)
+{
+  switch(b) {
+  case SMP::Discrete_lie_flow_border::AUTOMATIC: return "automatic";
+  case SMP::Discrete_lie_flow_border::CIRCLE: return "circle";
+  case SMP::Discrete_lie_flow_border::SQUARE: return "square";
+  case SMP::Discrete_lie_flow_border::FREE: return "free";
+  }
+  return "unknown";
+}
+
+// The border the flow used; the requested one if the flow did not start.
+std::string used_border(const Disk_run& run, const Disk_settings& s)
+{
+  return run.report.border == SMP::Discrete_lie_flow_border::AUTOMATIC ? s.border : border_name(run.report.border);
+}
+
+// The parameterizer's codes that blame the input rather than the flow (exit
+// code 1, like the tool's own input checks).
+bool is_input_error(int code)
+{
+  return code == SMP::ERROR_EMPTY_MESH || code == SMP::ERROR_NON_TRIANGULAR_MESH ||
+         code == SMP::ERROR_NO_TOPOLOGICAL_DISC || code == SMP::ERROR_DEGENERATE_INPUT ||
+         code == SMP::ERROR_INVALID_DENSITY;
+}
+
+bool print_iteration(const SMP::Discrete_lie_flow_iteration& it)
+{
+  std::printf("  iteration %4zu  d_area %.10g  step %.3g (critical %.3g, face %d)  backtracks %zu  flips %zu  %.2f s\n",
+              it.iteration, it.d_area, it.step, it.critical_step, it.limiting_face, it.backtracks, it.flips, it.seconds);
+  std::fflush(stdout);
+  return true;
+}
+
+json history_json(const std::vector<SMP::Discrete_lie_flow_iteration>& history)
+{
+  json h = json::array();
+  for(const SMP::Discrete_lie_flow_iteration& it : history)
+    h.push_back({ { "iteration", it.iteration }, { "step", it.step }, { "critical_step", it.critical_step },
+                  { "limiting_face", it.limiting_face }, { "d_area", it.d_area }, { "residual", it.residual },
+                  { "backtracks", it.backtracks }, { "flips", it.flips }, { "seconds", it.seconds } });
+  return h;
+}
+
+json make_report(const Disk_settings& s, const Indexed_mesh& mesh, const Disk_run& run, const Metrics* initial,
+                 const Metrics* final_metrics)
+{
+  const SMP::Discrete_lie_flow_report& R = run.report;
+  json j;
+  j["status"] = SMP::discrete_lie_flow_error_name(run.status);
+  j["message"] = R.message;
+  j["input"] = s.input;
+  j["vertices"] = mesh.xyz.size();
+  j["faces"] = mesh.faces.size();
+  j["iterations"] = R.iterations;
+  j["stop_reason"] = SMP::stop_reason_name(R.stop_reason);
+  j["seconds"] = { { "initial", R.seconds_initial }, { "flow", R.seconds_flow }, { "total", run.seconds } };
+  j["initial"] = initial ? metrics_to_json(*initial) : json(nullptr);
+  j["final"] = final_metrics ? metrics_to_json(*final_metrics) : json(nullptr);
+  j["mode"] = s.mode;
+  j["init"] = s.init;
+  j["border"] = used_border(run, s);
+  j["caller_inverted_faces"] = R.caller_inverted_faces;
+  j["flowing_inverted_faces"] = R.flowing_inverted_faces;
+  j["flips"] = R.flips;
+  j["initial_domain_d_area"] = R.initial_d_area;
+  j["domain_d_area"] = R.final_d_area;
+  j["final_residual"] = R.final_residual;
+  j["rejected_by_exact_check"] = R.rejected_by_exact_check;
+  j["options"] = { { "tolerance", s.options.tolerance }, { "max_iterations", s.options.max_iterations },
+                   { "mu", s.options.mu > 0 ? json(s.options.mu) : json(nullptr) }, // null: the mode's default { "literal_targets", !s.options.lump_targets_on_flowing_faces },
+                   { "delaunay_flips", s.options.delaunay_flips } };
+  if(s.options.record_history) j["history"] = history_json(R.history);
+  return j;
+}
+
+void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh& mesh, const Disk_run& run,
+                   const Metrics* initial, const Metrics* final_metrics, const std::vector<std::string>& written)
+{
+  const SMP::Discrete_lie_flow_report& R = run.report;
+  out << std::setprecision(8);
+  out << "dlf disk " << s.input << ": " << mesh.xyz.size() << " vertices, " << mesh.faces.size() << " faces\n"
+      << "  mode " << s.mode << ", init " << s.init << ", border " << used_border(run, s) << "\n"
+      << "  status " << SMP::discrete_lie_flow_error_name(run.status) << ": " << R.message << "\n"
+      << "  iterations " << R.iterations << " (" << SMP::stop_reason_name(R.stop_reason) << ")\n";
+  if(initial) {
+    out << "  d_area " << initial->d_area;
+    if(final_metrics) out << " -> " << final_metrics->d_area;
+    out << " (optimum 2)\n  inverted faces " << initial->inverted_faces;
+    if(final_metrics) out << " -> " << final_metrics->inverted_faces;
+    out << "\n";
+  }
+  if(s.mode == "paper") out << "  edge flips " << R.flips << "\n";
+  out << std::setprecision(3) << "  seconds: initial map " << R.seconds_initial << ", flow " << R.seconds_flow
+      << ", total " << run.seconds << "\n";
+  for(const std::string& w : written) out << "  wrote " << w << "\n";
+}
+
+} // namespace
+
+int disk_command(const std::vector<std::string>& args)
+{
+  Disk_settings s;
+  if(!parse_disk_arguments(args, s)) return EXIT_OK;
+
+  Output_files outputs;
+  if(!s.output.empty()) outputs.declare(s.output, "-o");
+  if(!s.domain_mesh.empty()) outputs.declare(s.domain_mesh, "--domain-mesh");
+  if(!s.svg.empty()) outputs.declare(s.svg, "--svg");
+  if(!s.report.empty()) outputs.declare(s.report, "--report");
+
+  const Indexed_mesh mesh = read_triangle_mesh(s.input);
+  check_disk_topology(mesh, s.input);
+
+  if(s.verbosity == Verbosity::VERBOSE) s.options.callback = &print_iteration;
+  const Disk_run run = run_disk(mesh, s);
+  const bool ok = run.status == SMP::OK;
+
+  Metrics initial, final_metrics;
+  if(!run.initial_uv.empty()) initial = compute_metrics(mesh, run.initial_uv);
+  if(ok) final_metrics = compute_metrics(mesh, run.final_uv);
+  const Metrics* initial_ptr = run.initial_uv.empty() ? nullptr : &initial;
+  const Metrics* final_ptr = ok ? &final_metrics : nullptr;
+
+  // On a flow error, only the report is written: it says what went wrong.
+  if(ok) {
+    std::ostringstream comment;
+    comment << std::setprecision(10) << "dlf disk " << s.input << ": mode " << s.mode << ", init " << s.init
+            << ", border " << used_border(run, s) << ", d_area " << final_metrics.d_area;
+    if(!s.output.empty())
+      outputs.write(s.output, [&](std::ostream& o) { write_uv_obj(o, mesh.xyz, run.final_uv, mesh.faces, comment.str()); });
+    if(!s.domain_mesh.empty()) {
+      // Certified mode keeps the input triangulation; its faces are written
+      // in input order (the report lists them in the library's walk order).
+      const std::vector<Triangle>& domain =
+        s.mode == "paper" ? run.report.domain_faces : mesh.faces;
+      outputs.write(s.domain_mesh, [&](std::ostream& o) {
+        write_uv_obj(o, mesh.xyz, run.final_uv, domain, comment.str() + " (domain triangulation)");
+      });
+    }
+    if(!s.svg.empty())
+      outputs.write(s.svg, [&](std::ostream& o) { write_svg_layout(o, mesh, run.final_uv, comment.str()); });
+  }
+  if(!s.report.empty()) {
+    const json report = make_report(s, mesh, run, initial_ptr, final_ptr);
+    outputs.write(s.report, [&](std::ostream& o) { o << report.dump(2) << '\n'; });
+  }
+  outputs.commit();
+
+  if(s.verbosity != Verbosity::QUIET) print_summary(std::cout, s, mesh, run, initial_ptr, final_ptr, outputs.committed());
+  if(!ok)
+    throw Cli_error(s.input + ": " + SMP::discrete_lie_flow_error_name(run.status) + ": " + run.report.message,
+                    is_input_error(run.status) ? EXIT_BAD_INPUT : EXIT_FLOW_ERROR);
+  return EXIT_OK;
+}
+
+} // namespace dlf_cli

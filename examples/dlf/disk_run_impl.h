@@ -1,0 +1,122 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The templated part of a run, instantiated once per initial parameterizer
+// in disk_run_fixed_border.cpp and disk_run_free_border.cpp (two translation
+// units, so that a two-core build compiles them side by side).
+
+#ifndef DLF_CLI_DISK_RUN_IMPL_H
+#define DLF_CLI_DISK_RUN_IMPL_H
+
+#include "disk_run.h"
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/Error_code.h>
+
+#include <Eigen/SparseLU>
+
+#include <chrono>
+#include <memory>
+
+namespace dlf_cli {
+
+typedef CGAL::Simple_cartesian<double> Kernel;
+typedef CGAL::Surface_mesh<Kernel::Point_3> Surface_mesh;
+typedef boost::graph_traits<Surface_mesh>::halfedge_descriptor halfedge_descriptor;
+typedef boost::graph_traits<Surface_mesh>::vertex_descriptor vertex_descriptor;
+
+/// The direct solver CGAL's fixed-border parameterizers use (and the
+/// library's default initial map), so that Tutte on a circle is the very
+/// instantiation the library's default makes.
+typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType,
+                                                  Eigen::COLAMDOrdering<int> > > Direct_solver;
+
+/// Forwards to an initial parameterizer and keeps a copy of the map it
+/// computed: the report's initial metrics need the initial map, and the flow
+/// overwrites it. Cheaper than a second run of the initial parameterizer
+/// (ARAP takes seconds on large meshes).
+template <class Init>
+class Initial_map_recorder
+{
+public:
+  explicit Initial_map_recorder(Init init = Init(),
+                                std::shared_ptr<std::vector<Vec2> > out = std::make_shared<std::vector<Vec2> >())
+    : m_init(init), m_out(out)
+  {}
+
+  template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>
+  CGAL::Surface_mesh_parameterization::Error_code parameterize(Surface_mesh& mesh, halfedge_descriptor bhd,
+                                                               VertexUVmap uvmap, VertexIndexMap vimap,
+                                                               VertexParameterizedMap vpmap)
+  {
+    const CGAL::Surface_mesh_parameterization::Error_code code = m_init.parameterize(mesh, bhd, uvmap, vimap, vpmap);
+    m_out->clear();
+    if(code != CGAL::Surface_mesh_parameterization::OK) return code;
+    m_out->resize(num_vertices(mesh));
+    for(vertex_descriptor v : vertices(mesh)) {
+      const Kernel::Point_2 p = get(uvmap, v);
+      (*m_out)[std::size_t(get(vimap, v))] = {{ p.x(), p.y() }};
+    }
+    return code;
+  }
+
+private:
+  Init m_init;
+  std::shared_ptr<std::vector<Vec2> > m_out;
+};
+
+/// Builds the Surface_mesh in input order: vertex i of the file is
+/// `Surface_mesh::Vertex_index(i)`, so its index is the input index.
+inline void build_surface_mesh(const Indexed_mesh& in, Surface_mesh& sm)
+{
+  sm.reserve(Surface_mesh::size_type(in.xyz.size()), Surface_mesh::size_type(3 * in.faces.size()),
+             Surface_mesh::size_type(in.faces.size()));
+  for(const Vec3& p : in.xyz) sm.add_vertex(Kernel::Point_3(p[0], p[1], p[2]));
+  for(const Triangle& t : in.faces)
+    sm.add_face(Surface_mesh::Vertex_index(t[0]), Surface_mesh::Vertex_index(t[1]), Surface_mesh::Vertex_index(t[2]));
+}
+
+/// Runs the flow with the initial parameterizer `init`, calling the
+/// parameterizer's own parameterize() (as SMP's free function does) with an
+/// index map that equals the input order, so that the report's
+/// `domain_faces` index input vertices.
+template <class Init>
+Disk_run run_disk_with(const Indexed_mesh& mesh, const Init& init, const Disk_settings& settings)
+{
+  namespace SMP = CGAL::Surface_mesh_parameterization;
+  typedef Initial_map_recorder<Init> Recorder;
+  typedef SMP::Discrete_lie_flow_parameterizer_3<Surface_mesh, Recorder> Parameterizer;
+
+  Surface_mesh sm;
+  build_surface_mesh(mesh, sm);
+  halfedge_descriptor bhd = boost::graph_traits<Surface_mesh>::null_halfedge();
+  for(halfedge_descriptor h : halfedges(sm))
+    if(is_border(h, sm)) { bhd = h; break; } // the only border loop (checked)
+
+  auto uvmap = sm.add_property_map<vertex_descriptor, Kernel::Point_2>("v:dlf_uv").first;
+  auto vimap = sm.add_property_map<vertex_descriptor, int>("v:dlf_index", -1).first;
+  auto vpmap = sm.add_property_map<vertex_descriptor, bool>("v:dlf_parameterized", false).first;
+  for(vertex_descriptor v : vertices(sm)) put(vimap, v, int(v.idx()));
+
+  Disk_run run;
+  auto initial = std::make_shared<std::vector<Vec2> >();
+  Parameterizer parameterizer(Recorder(init, initial), settings.options);
+  const auto t0 = std::chrono::steady_clock::now();
+  run.status = parameterizer.parameterize(sm, bhd, uvmap, vimap, vpmap);
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  run.report = parameterizer.report();
+  run.initial_uv = *initial;
+  if(run.status == SMP::OK) {
+    run.final_uv.resize(num_vertices(sm));
+    for(vertex_descriptor v : vertices(sm)) {
+      const Kernel::Point_2 p = get(uvmap, v);
+      run.final_uv[v.idx()] = {{ p.x(), p.y() }};
+    }
+  }
+  return run;
+}
+
+} // namespace dlf_cli
+
+#endif

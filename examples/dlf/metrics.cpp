@@ -1,0 +1,42 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include "metrics.h"
+
+namespace dlf_cli {
+
+Metrics compute_metrics(const Indexed_mesh& mesh, const std::vector<Vec2>& uv)
+{
+  return CGAL::Surface_mesh_parameterization::internal::dlf::planar_distortion(mesh.xyz, uv, mesh.faces);
+}
+
+nlohmann::ordered_json metrics_to_json(const Metrics& m)
+{
+  // Field names are fixed by DESIGN.md; the last two are additions.
+  return nlohmann::ordered_json{
+    { "d_area", m.d_area },
+    { "arap", m.arap },
+    { "symmetric_dirichlet", m.symmetric_dirichlet },
+    { "log_area_ratio", { { "mean_abs", m.log_area_mean_abs }, { "max_abs", m.log_area_max_abs },
+                          { "rms", m.log_area_rms } } },
+    { "inverted_faces", m.inverted_faces },
+    { "degenerate_faces", m.degenerate_faces },
+    { "min_angle_degrees", m.min_angle_degrees },
+    { "faces_below_1_degree", m.faces_below_1_degree }
+  };
+}
+
+void print_metrics(std::ostream& out, const Metrics& m, const std::string& indent)
+{
+  out << indent << "d_area               " << m.d_area << "  (optimum 2)\n"
+      << indent << "arap                 " << m.arap << "\n"
+      << indent << "symmetric_dirichlet  " << m.symmetric_dirichlet << "\n"
+      << indent << "|log area ratio|     mean " << m.log_area_mean_abs << ", max " << m.log_area_max_abs
+      << ", rms " << m.log_area_rms << "\n"
+      << indent << "inverted faces       " << m.inverted_faces << "\n"
+      << indent << "degenerate faces     " << m.degenerate_faces << "\n"
+      << indent << "min angle (degrees)  " << m.min_angle_degrees << "  (" << m.faces_below_1_degree
+      << " faces below 1 degree)\n";
+}
+
+} // namespace dlf_cli

@@ -1,0 +1,34 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The METRICS block of DESIGN.md (computed by the library's
+// planar_distortion()), as JSON and as text.
+
+#ifndef DLF_CLI_METRICS_H
+#define DLF_CLI_METRICS_H
+
+#include "mesh_input.h"
+
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/distortion.h>
+
+#include <nlohmann/json.hpp>
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace dlf_cli {
+
+typedef CGAL::Surface_mesh_parameterization::internal::dlf::Distortion_metrics Metrics;
+
+/// Distortion of the map `uv` of the caller's triangles `mesh.faces`.
+Metrics compute_metrics(const Indexed_mesh& mesh, const std::vector<Vec2>& uv);
+
+nlohmann::ordered_json metrics_to_json(const Metrics& m);
+
+/// One metric a line, each prefixed by `indent`.
+void print_metrics(std::ostream& out, const Metrics& m, const std::string& indent);
+
+} // namespace dlf_cli
+
+#endif

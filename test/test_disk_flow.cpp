@@ -1,0 +1,719 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The planar Discrete Lie Flow on the disk meshes of CGAL's data set, through
+// the public class, in both modes. Every property is recomputed here from the
+// positions (exact orientations with CGAL's predicates, areas, boundary
+// positions); the report is only compared against those recomputations.
+
+#include <gtest/gtest.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Square_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+#include <CGAL/Surface_mesh_parameterization/square_border_corners.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+
+namespace {
+
+typedef CGAL::Simple_cartesian<double> K;
+typedef CGAL::Surface_mesh<K::Point_3> SM;
+typedef SM::Vertex_index SM_vertex;
+typedef boost::graph_traits<SM>::halfedge_descriptor SM_halfedge;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+typedef Epick::Point_2 EP;
+typedef std::array<double, 2> V2;
+typedef std::array<double, 3> V3;
+typedef std::array<int, 3> Tri;
+
+typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType,
+                                                  Eigen::COLAMDOrdering<int> > > LU_traits;
+typedef SMP::Discrete_lie_flow_parameterizer_3<SM> Circle_dlf;
+typedef Circle_dlf::Initial_parameterizer Circle_init;
+typedef SMP::Barycentric_mapping_parameterizer_3<SM, SMP::Square_border_arc_length_parameterizer_3<SM>, LU_traits>
+  Square_init;
+typedef SMP::Discrete_lie_flow_parameterizer_3<SM, Square_init> Square_dlf;
+
+std::string mesh_path(const std::string& name) { return std::string(DLF_DATA_DIR) + "/meshes/" + name + ".off"; }
+
+// ---------------------------------------------------------------------------
+// Independent checks (index form)
+// ---------------------------------------------------------------------------
+
+EP ep(const V2& p) { return EP(p[0], p[1]); }
+
+/// Exact orientation of every face: counts of positive, negative, zero.
+struct Signs { std::size_t pos = 0, neg = 0, zero = 0; };
+Signs exact_signs(const std::vector<V2>& uv, const std::vector<Tri>& faces)
+{
+  Signs s;
+  for(const Tri& t : faces) {
+    const CGAL::Orientation o = CGAL::orientation(ep(uv[t[0]]), ep(uv[t[1]]), ep(uv[t[2]]));
+    if(o == CGAL::POSITIVE) ++s.pos; else if(o == CGAL::NEGATIVE) ++s.neg; else ++s.zero;
+  }
+  return s;
+}
+
+long double area_2(const V2& a, const V2& b, const V2& c)
+{
+  return 0.5L * (((long double)b[0] - a[0]) * ((long double)c[1] - a[1]) -
+                 ((long double)b[1] - a[1]) * ((long double)c[0] - a[0]));
+}
+
+long double area_3(const V3& a, const V3& b, const V3& c)
+{
+  const long double u[3] = { (long double)b[0] - a[0], (long double)b[1] - a[1], (long double)b[2] - a[2] };
+  const long double v[3] = { (long double)c[0] - a[0], (long double)c[1] - a[1], (long double)c[2] - a[2] };
+  const long double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2], z = u[0] * v[1] - u[1] * v[0];
+  return 0.5L * std::sqrt(x * x + y * y + z * z);
+}
+
+/// D_area = Σ w_t (r_t + 1/r_t), w_t = A_t/ΣA, r_t = (|u_t|/Σ|u|)/w_t (DESIGN.md),
+/// written as Σ (v_t + w_t²/v_t) with v_t = |u_t|/Σ|u|, so that a face with a
+/// flat 3D triangle (w_t = 0, possible after flips) contributes its limit v_t.
+double d_area(const std::vector<V3>& xyz, const std::vector<V2>& uv, const std::vector<Tri>& faces)
+{
+  long double A = 0, U = 0;
+  std::vector<long double> a(faces.size()), u(faces.size());
+  for(std::size_t f = 0; f < faces.size(); ++f) {
+    const Tri& t = faces[f];
+    a[f] = area_3(xyz[t[0]], xyz[t[1]], xyz[t[2]]);
+    u[f] = std::fabs(area_2(uv[t[0]], uv[t[1]], uv[t[2]]));
+    A += a[f]; U += u[f];
+  }
+  long double e = 0;
+  for(std::size_t f = 0; f < faces.size(); ++f) {
+    const long double w = a[f] / A, v = u[f] / U;
+    e += v + w * w / v;
+  }
+  return double(e);
+}
+
+/// Smallest 3D area of `faces` relative to the mean.
+double smallest_relative_area_3(const std::vector<V3>& xyz, const std::vector<Tri>& faces)
+{
+  long double A = 0, m = -1;
+  for(const Tri& t : faces) {
+    const long double a = area_3(xyz[t[0]], xyz[t[1]], xyz[t[2]]);
+    A += a;
+    m = (m < 0) ? a : (std::min)(m, a);
+  }
+  return double(m * faces.size() / A);
+}
+
+struct Mesh_data
+{
+  std::vector<V3> xyz;
+  std::vector<Tri> faces;
+  std::vector<int> border; // the border loop of bhd, in halfedge order
+};
+
+/// Vertex and face arrays of a Surface_mesh without removed elements.
+Mesh_data extract(const SM& sm, SM_halfedge bhd)
+{
+  Mesh_data m;
+  for(SM_vertex v : vertices(sm)) {
+    const K::Point_3& p = sm.point(v);
+    m.xyz.push_back({{ p.x(), p.y(), p.z() }});
+  }
+  for(auto f : faces(sm)) {
+    Tri t; int k = 0;
+    for(SM_vertex v : vertices_around_face(halfedge(f, sm), sm)) t[k++] = int(v.idx());
+    m.faces.push_back(t);
+  }
+  for(SM_halfedge h : halfedges_around_face(bhd, sm)) m.border.push_back(int(target(h, sm).idx()));
+  return m;
+}
+
+/// Twice the shoelace area of a closed polygon (long double).
+long double polygon_area(const std::vector<V2>& uv, const std::vector<int>& loop)
+{
+  long double s = 0;
+  for(std::size_t k = 0; k < loop.size(); ++k) {
+    const V2& a = uv[loop[k]];
+    const V2& b = uv[loop[(k + 1) % loop.size()]];
+    s += (long double)a[0] * b[1] - (long double)a[1] * b[0];
+  }
+  return 0.5L * s;
+}
+
+/// Lumped vertex areas (1/3 of each incident face's |area|).
+std::vector<long double> lumped(std::size_t n, const std::vector<Tri>& faces, const std::vector<long double>& per_face)
+{
+  std::vector<long double> out(n, 0.L);
+  for(std::size_t f = 0; f < faces.size(); ++f)
+    for(int k = 0; k < 3; ++k) out[faces[f][k]] += per_face[f] / 3;
+  return out;
+}
+
+/// Checks that `dom` is a triangulation of the same disk as `ref`: the same
+/// vertices, every interior edge in two faces with opposite directions, and
+/// the border edges (in one face) exactly those of `ref`.
+::testing::AssertionResult same_disk(const std::vector<Tri>& dom, const std::vector<Tri>& ref, std::size_t n)
+{
+  if(dom.size() != ref.size()) return ::testing::AssertionFailure() << "face counts differ";
+  auto border_edges = [](const std::vector<Tri>& F, std::set<std::pair<int, int> >& border,
+                         std::string& err) {
+    std::map<std::pair<int, int>, int> directed;
+    for(const Tri& t : F)
+      for(int k = 0; k < 3; ++k) {
+        const std::pair<int, int> e(t[k], t[(k + 1) % 3]);
+        if(++directed[e] > 1) { err = "directed edge used twice"; return; }
+      }
+    for(const auto& e : directed)
+      if(!directed.count(std::make_pair(e.first.second, e.first.first)))
+        border.insert(std::make_pair((std::min)(e.first.first, e.first.second), (std::max)(e.first.first, e.first.second)));
+  };
+  std::set<std::pair<int, int> > bd, br;
+  std::string err;
+  border_edges(dom, bd, err);
+  if(!err.empty()) return ::testing::AssertionFailure() << "domain faces: " << err;
+  border_edges(ref, br, err);
+  if(!err.empty()) return ::testing::AssertionFailure() << "reference faces: " << err;
+  if(bd != br) return ::testing::AssertionFailure() << "border edges differ";
+  std::vector<bool> used(n, false);
+  for(const Tri& t : dom) for(int v : t) if(v >= 0 && std::size_t(v) < n) used[std::size_t(v)] = true; else return ::testing::AssertionFailure() << "bad vertex index";
+  if(std::count(used.begin(), used.end(), false) != 0) return ::testing::AssertionFailure() << "unused vertex";
+  return ::testing::AssertionSuccess();
+}
+
+/// Interior edges of a positively oriented triangulation that are not
+/// locally Delaunay (exact in-circle test) although their quad is strictly
+/// convex; `refused` counts the non-Delaunay edges whose quad is not.
+std::size_t non_delaunay_edges(const std::vector<V2>& uv, const std::vector<Tri>& F, std::size_t& refused)
+{
+  std::map<std::pair<int, int>, std::pair<int, int> > opp; // directed edge -> (face, corner opposite)
+  for(std::size_t f = 0; f < F.size(); ++f)
+    for(int k = 0; k < 3; ++k) opp[std::make_pair(F[f][(k + 1) % 3], F[f][(k + 2) % 3])] = std::make_pair(int(f), k);
+  std::size_t bad = 0;
+  refused = 0;
+  for(const auto& e : opp) {
+    if(e.first.first > e.first.second) continue;
+    const auto it = opp.find(std::make_pair(e.first.second, e.first.first));
+    if(it == opp.end()) continue;
+    const int b = e.first.first, c = e.first.second;
+    const int a = F[e.second.first][e.second.second];
+    const int d = F[it->second.first][it->second.second];
+    // faces (a, b, c) and (d, c, b), both positive
+    if(CGAL::side_of_oriented_circle(ep(uv[a]), ep(uv[b]), ep(uv[c]), ep(uv[d])) != CGAL::ON_POSITIVE_SIDE) continue;
+    const bool convex = CGAL::orientation(ep(uv[a]), ep(uv[b]), ep(uv[d])) == CGAL::POSITIVE &&
+                        CGAL::orientation(ep(uv[a]), ep(uv[d]), ep(uv[c])) == CGAL::POSITIVE;
+    if(convex) ++bad; else ++refused;
+  }
+  return bad;
+}
+
+// ---------------------------------------------------------------------------
+// One run: the initial map alone, then the flow, on the same mesh
+// ---------------------------------------------------------------------------
+
+struct Flow_run
+{
+  SMP::Error_code code = SMP::OK;
+  SMP::Discrete_lie_flow_report report;
+  Mesh_data mesh;
+  std::vector<V2> uv0, uv; // the initial map and the result, by vertex index
+};
+
+bool read_mesh(const std::string& name, SM& sm)
+{
+  std::ifstream in(mesh_path(name));
+  return in && (in >> sm) && !faces(sm).empty();
+}
+
+SM_halfedge first_border_halfedge(const SM& sm)
+{
+  for(SM_halfedge h : halfedges(sm)) if(is_border(h, sm)) return h;
+  return boost::graph_traits<SM>::null_halfedge();
+}
+
+std::size_t border_loops(const SM& sm)
+{
+  std::set<SM_halfedge> seen;
+  std::size_t loops = 0;
+  for(SM_halfedge h : halfedges(sm)) {
+    if(!is_border(h, sm) || seen.count(h)) continue;
+    ++loops;
+    for(SM_halfedge g : halfedges_around_face(h, sm)) seen.insert(g);
+  }
+  return loops;
+}
+
+template <class Init>
+std::vector<V2> initial_map(SM& sm, SM_halfedge bhd, Init init)
+{
+  auto uvm = sm.add_property_map<SM_vertex, K::Point_2>("v:test_uv0").first;
+  const SMP::Error_code c = SMP::parameterize(sm, init, bhd, uvm);
+  std::vector<V2> uv;
+  if(c == SMP::OK) for(SM_vertex v : vertices(sm)) uv.push_back({{ uvm[v].x(), uvm[v].y() }});
+  sm.remove_property_map(uvm);
+  return uv;
+}
+
+/// Runs the DLF through its member `parameterize()` with the Surface_mesh's
+/// own vertex numbering, so that the report's indices are ours.
+template <class Dlf>
+Flow_run run_dlf(SM& sm, typename Dlf::Initial_parameterizer init, const SMP::Discrete_lie_flow_options& opt)
+{
+  Flow_run r;
+  const SM_halfedge bhd = first_border_halfedge(sm);
+  r.mesh = extract(sm, bhd);
+  r.uv0 = initial_map(sm, bhd, init);
+  auto uvm = sm.add_property_map<SM_vertex, K::Point_2>("v:test_uv").first;
+  auto vim = sm.add_property_map<SM_vertex, int>("v:test_index").first;
+  auto vpm = sm.add_property_map<SM_vertex, bool>("v:test_param", false).first;
+  for(SM_vertex v : vertices(sm)) vim[v] = int(v.idx());
+  Dlf dlf(init, opt);
+  r.code = dlf.parameterize(sm, bhd, uvm, vim, vpm);
+  r.report = dlf.report();
+  for(SM_vertex v : vertices(sm)) r.uv.push_back({{ uvm[v].x(), uvm[v].y() }});
+  sm.remove_property_map(uvm);
+  sm.remove_property_map(vim);
+  sm.remove_property_map(vpm);
+  return r;
+}
+
+// ---------------------------------------------------------------------------
+// Shared verification of a certified run
+// ---------------------------------------------------------------------------
+
+enum class Border_shape { CIRCLE, SQUARE };
+
+/// Circle through three points (long double).
+void circumcircle(const V2& a, const V2& b, const V2& c, long double& cx, long double& cy, long double& r)
+{
+  const long double bx = (long double)b[0] - a[0], by = (long double)b[1] - a[1];
+  const long double qx = (long double)c[0] - a[0], qy = (long double)c[1] - a[1];
+  const long double d = 2 * (bx * qy - by * qx);
+  const long double ux = (qy * (bx * bx + by * by) - by * (qx * qx + qy * qy)) / d;
+  const long double uy = (bx * (qx * qx + qy * qy) - qx * (bx * bx + by * by)) / d;
+  cx = a[0] + ux; cy = a[1] + uy; r = std::sqrt(ux * ux + uy * uy);
+}
+
+/// Boundary vertices on the initial circle or square; `faces` is the
+/// triangulation whose area must be the square's.
+void expect_on_border(const Flow_run& r, Border_shape shape, const std::vector<Tri>& faces)
+{
+  const std::vector<int>& loop = r.mesh.border;
+  ASSERT_GE(loop.size(), 3u);
+  if(shape == Border_shape::CIRCLE) {
+    long double cx, cy, r0;
+    circumcircle(r.uv0[loop[0]], r.uv0[loop[loop.size() / 3]], r.uv0[loop[2 * loop.size() / 3]], cx, cy, r0);
+    for(int v : loop) // the initial map is on that circle (sanity of the reference)
+      ASSERT_LE(std::fabs(std::hypot((long double)r.uv0[v][0] - cx, (long double)r.uv0[v][1] - cy) - r0), 1e-13L * r0);
+    std::size_t off = 0;
+    long double worst = 0, winding = 0;
+    int sign = 0;
+    bool monotone = true;
+    for(std::size_t k = 0; k < loop.size(); ++k) {
+      const V2& p = r.uv[loop[k]];
+      const long double d = std::fabs(std::hypot((long double)p[0] - cx, (long double)p[1] - cy) - r0);
+      worst = (std::max)(worst, d);
+      if(d > 1e-12L * r0) ++off;
+      const V2& q = r.uv[loop[(k + 1) % loop.size()]];
+      long double da = std::atan2((long double)q[1] - cy, (long double)q[0] - cx) - std::atan2((long double)p[1] - cy, (long double)p[0] - cx);
+      while(da > M_PI) da -= 2 * M_PI;
+      while(da < -M_PI) da += 2 * M_PI;
+      const int s = da > 0 ? 1 : (da < 0 ? -1 : 0);
+      if(sign == 0) sign = s;
+      if(s != sign) monotone = false;
+      winding += da;
+    }
+    // KNOWN FAILURE (library, boundary_curve.h): the circle is fitted around
+    // the vertices' centroid, not the circle's centre; see
+    // Boundary_curve.UnevenlySpacedCircleIsDetectedAndReproduced.
+    EXPECT_EQ(off, 0u) << "boundary vertices off the circle; worst |r - r0| / r0 = " << double(worst / r0);
+    EXPECT_TRUE(monotone) << "the boundary vertices changed their cyclic order";
+    EXPECT_NEAR(double(std::fabs(winding)), 2 * M_PI, 1e-9);
+  } else {
+    double x0 = r.uv0[loop[0]][0], x1 = x0, y0 = r.uv0[loop[0]][1], y1 = y0;
+    for(int v : loop) {
+      x0 = (std::min)(x0, r.uv0[v][0]); x1 = (std::max)(x1, r.uv0[v][0]);
+      y0 = (std::min)(y0, r.uv0[v][1]); y1 = (std::max)(y1, r.uv0[v][1]);
+    }
+    const double side = x1 - x0, tol = 1e-12 * side;
+    ASSERT_NEAR(side, y1 - y0, tol);
+    auto side_of = [&](const V2& p) { // bit set of the sides p lies on
+      int s = 0;
+      if(std::fabs(p[1] - y0) <= tol) s |= 1;
+      if(std::fabs(p[0] - x1) <= tol) s |= 2;
+      if(std::fabs(p[1] - y1) <= tol) s |= 4;
+      if(std::fabs(p[0] - x0) <= tol) s |= 8;
+      return s;
+    };
+    std::size_t corners = 0, off = 0, moved_corners = 0, changed_side = 0;
+    for(int v : loop) {
+      const V2 &p0 = r.uv0[v], &p = r.uv[v];
+      const int s0 = side_of(p0), s = side_of(p);
+      const bool inside = p[0] >= x0 - tol && p[0] <= x1 + tol && p[1] >= y0 - tol && p[1] <= y1 + tol;
+      if(s == 0 || !inside) ++off;
+      const bool corner = (s0 & (s0 - 1)) != 0; // on two sides
+      if(corner) { ++corners; if(p[0] != p0[0] || p[1] != p0[1]) ++moved_corners; }
+      else if((s & s0) == 0) ++changed_side;
+    }
+    EXPECT_EQ(corners, 4u);
+    EXPECT_EQ(off, 0u) << "boundary vertices off the square";
+    EXPECT_EQ(moved_corners, 0u) << "square corners moved";
+    EXPECT_EQ(changed_side, 0u) << "boundary vertices moved to another side";
+    long double total = 0;
+    for(const Tri& t : faces) total += std::fabs(area_2(r.uv[t[0]], r.uv[t[1]], r.uv[t[2]]));
+    EXPECT_LE(std::fabs(total - (long double)side * side), 1e-12L * side * side) << "the square's area is not conserved";
+  }
+}
+
+/// Validity and quality of a map on `faces` (all of one strict orientation,
+/// the faces cover the border polygon exactly once).
+void expect_embedding(const std::vector<V2>& uv, const std::vector<Tri>& faces, const std::vector<int>& loop,
+                      const char* what)
+{
+  const Signs s = exact_signs(uv, faces);
+  EXPECT_EQ(s.zero, 0u) << what << ": degenerate faces (exact)";
+  EXPECT_EQ((std::min)(s.pos, s.neg), 0u) << what << ": inverted faces (exact): " << s.pos << " positive, " << s.neg << " negative";
+  long double sum = 0;
+  for(const Tri& t : faces) sum += std::fabs(area_2(uv[t[0]], uv[t[1]], uv[t[2]]));
+  const long double poly = std::fabs(polygon_area(uv, loop));
+  EXPECT_LE(std::fabs(sum - poly), 1e-12L * poly) << what << ": the faces do not tile the border polygon";
+}
+
+void expect_report_totals(const Flow_run& r, const std::vector<Tri>& dom)
+{
+  const std::size_t n = r.mesh.xyz.size();
+  ASSERT_EQ(r.report.domain_area.size(), n);
+  ASSERT_EQ(r.report.target_area.size(), n);
+  std::vector<long double> u(dom.size()), a(dom.size());
+  long double U = 0, A = 0;
+  for(std::size_t f = 0; f < dom.size(); ++f) {
+    const Tri& t = dom[f];
+    u[f] = std::fabs(area_2(r.uv[t[0]], r.uv[t[1]], r.uv[t[2]]));
+    a[f] = area_3(r.mesh.xyz[t[0]], r.mesh.xyz[t[1]], r.mesh.xyz[t[2]]);
+    U += u[f]; A += a[f];
+  }
+  const std::vector<long double> lu = lumped(n, dom, u), la = lumped(n, dom, a);
+  long double so = 0, st = 0, err_o = 0, err_t = 0;
+  for(std::size_t i = 0; i < n; ++i) {
+    so += r.report.domain_area[i];
+    st += r.report.target_area[i];
+    err_o = (std::max)(err_o, std::fabs(r.report.domain_area[i] - lu[i]));
+    err_t = (std::max)(err_t, std::fabs(r.report.target_area[i] - la[i] * U / A));
+  }
+  EXPECT_LE(std::fabs(so - st), 1e-12L * U) << "sum of target areas != sum of domain areas";
+  EXPECT_LE(std::fabs(so - U), 1e-12L * U) << "reported domain areas do not sum to the domain's area";
+  EXPECT_LE(err_o, 1e-12L * U) << "reported per-vertex domain areas differ from the recomputed ones";
+  EXPECT_LE(err_t, 1e-12L * U) << "reported per-vertex target areas differ from the recomputed ones";
+}
+
+void expect_certified_run(const Flow_run& r, Border_shape shape, double d_area_bound)
+{
+  ASSERT_EQ(r.code, SMP::OK) << SMP::discrete_lie_flow_error_name(r.code) << ": " << r.report.message;
+  EXPECT_EQ(r.report.status, SMP::OK);
+  ASSERT_EQ(r.uv.size(), r.mesh.xyz.size());
+  ASSERT_EQ(r.uv0.size(), r.mesh.xyz.size());
+  for(const V2& p : r.uv) ASSERT_TRUE(std::isfinite(p[0]) && std::isfinite(p[1]));
+
+  // Fold-free on the caller's faces, with the initial map's orientation.
+  const Signs s0 = exact_signs(r.uv0, r.mesh.faces), s = exact_signs(r.uv, r.mesh.faces);
+  ASSERT_TRUE(s0.zero == 0 && (s0.pos == 0 || s0.neg == 0)) << "the initial map is not an embedding";
+  EXPECT_EQ(s.pos, s0.pos) << "orientation of the caller's faces changed (inverted faces)";
+  EXPECT_EQ(s.neg, s0.neg) << "orientation of the caller's faces changed (inverted faces)";
+  EXPECT_EQ(s.zero, 0u) << "degenerate faces";
+  expect_embedding(r.uv, r.mesh.faces, r.mesh.border, "caller's faces");
+  EXPECT_EQ(r.report.caller_inverted_faces, 0u);
+  EXPECT_EQ(r.report.flowing_inverted_faces, 0u);
+
+  // Certified mode keeps the caller's connectivity.
+  ASSERT_EQ(r.report.domain_faces.size(), r.mesh.faces.size());
+  std::set<std::array<int, 3> > mine, theirs;
+  for(const Tri& t : r.mesh.faces) { Tri u = t; std::sort(u.begin(), u.end()); mine.insert(u); }
+  for(const auto& t : r.report.domain_faces) { Tri u = t; std::sort(u.begin(), u.end()); theirs.insert(u); }
+  EXPECT_TRUE(mine == theirs) << "the certified triangulation is not the caller's";
+
+  // Area distortion, recomputed.
+  const double d0 = d_area(r.mesh.xyz, r.uv0, r.mesh.faces), d = d_area(r.mesh.xyz, r.uv, r.mesh.faces);
+  EXPECT_LE(d, d_area_bound);
+  EXPECT_NEAR(d, r.report.final_d_area, 1e-9 * d) << "report().final_d_area differs from the recomputed d_area";
+  EXPECT_NEAR(d0, r.report.initial_d_area, 1e-9 * d0) << "report().initial_d_area differs from the recomputed one";
+  EXPECT_LE(d, d0) << "the result is worse than the initial map";
+
+  // Energy monotonically decreasing, as recorded.
+  double prev = r.report.initial_d_area;
+  for(const auto& h : r.report.history) {
+    EXPECT_LE(h.d_area, prev) << "d_area increased at iteration " << h.iteration;
+    EXPECT_GT(h.step, 0);
+    prev = h.d_area;
+  }
+  if(!r.report.history.empty()) EXPECT_EQ(r.report.history.size(), r.report.iterations);
+
+  expect_on_border(r, shape, r.mesh.faces);
+  expect_report_totals(r, r.mesh.faces);
+}
+
+std::string test_name(const ::testing::TestParamInfo<std::string>& info)
+{
+  std::string s = info.param;
+  for(char& c : s) if(!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return s;
+}
+
+SMP::Discrete_lie_flow_options certified_options()
+{
+  SMP::Discrete_lie_flow_options o;
+  o.record_history = true;
+  return o;
+}
+
+SMP::Discrete_lie_flow_options paper_options()
+{
+  SMP::Discrete_lie_flow_options o;
+  o.mode = SMP::Discrete_lie_flow_mode::PAPER;
+  o.record_history = true;
+  return o;
+}
+
+// ---------------------------------------------------------------------------
+// The data set
+// ---------------------------------------------------------------------------
+
+const std::vector<std::string> disk_meshes = {
+  "patch-23", "patch-13", "blob", "nefertiti", "patch-20", "mesh_with_border", "patch-01",
+  "poly2x^2+y^2-0.062500", "cylinder", "three_peaks", "mushroom"
+};
+const std::vector<std::string> large_disk_meshes = { "lion-head", "mannequin-devil", "cylinder_locally_refined" };
+const std::vector<std::string> mild_meshes = { "nefertiti", "patch-23", "patch-13", "patch-20", "patch-01",
+                                               "three_peaks", "mushroom" };
+
+class Certified_disk : public ::testing::TestWithParam<std::string> {};
+class Certified_large_disk : public ::testing::TestWithParam<std::string> {};
+class Paper_disk : public ::testing::TestWithParam<std::string> {};
+
+// The data set's meshes are what the tests assume: one component, one border loop, a disk.
+TEST_P(Certified_disk, InputIsADisk)
+{
+  SM sm;
+  ASSERT_TRUE(read_mesh(GetParam(), sm)) << mesh_path(GetParam());
+  EXPECT_GE(num_faces(sm), 100u);
+  EXPECT_EQ(border_loops(sm), 1u);
+  EXPECT_EQ(long(num_vertices(sm)) - long(num_edges(sm)) + long(num_faces(sm)), 1);
+}
+
+// KNOWN FAILURE (library): on meshes whose border is spaced unevenly on the
+// circle the boundary vertices leave it (see expect_on_border).
+TEST_P(Certified_disk, Circle)
+{
+  SM sm;
+  ASSERT_TRUE(read_mesh(GetParam(), sm));
+  const Flow_run r = run_dlf<Circle_dlf>(sm, Circle_init(), certified_options());
+  expect_certified_run(r, Border_shape::CIRCLE, 2.02);
+  EXPECT_EQ(r.report.border, SMP::Discrete_lie_flow_border::CIRCLE) << "the circle was not detected";
+}
+
+// The square of CGAL's Square_border_arc_length_parameterizer_3 with its
+// default corners, as a user would first call it. Where those corners put the
+// three vertices of a triangle on one side, the initial map is degenerate and
+// must be refused with ERROR_INITIAL_MAP_FOLDED (checked here independently);
+// otherwise the run must succeed with every property.
+TEST_P(Certified_disk, SquareDefaultCorners)
+{
+  SM sm;
+  ASSERT_TRUE(read_mesh(GetParam(), sm));
+  const Flow_run r = run_dlf<Square_dlf>(sm, Square_init(), certified_options());
+  ASSERT_EQ(r.uv0.size(), r.mesh.xyz.size());
+  const Signs s0 = exact_signs(r.uv0, r.mesh.faces);
+  const bool initial_ok = s0.zero == 0 && (s0.pos == 0 || s0.neg == 0);
+  if(!initial_ok) {
+    EXPECT_EQ(r.code, SMP::ERROR_INITIAL_MAP_FOLDED);
+    EXPECT_NE(r.report.message.find(std::to_string((std::min)(s0.pos, s0.neg)) + " inverted and " + std::to_string(s0.zero) + " degenerate"),
+              std::string::npos) << r.report.message;
+    // The uv map keeps the initial map.
+    EXPECT_TRUE(r.uv == r.uv0);
+    return;
+  }
+  expect_certified_run(r, Border_shape::SQUARE, 2.02);
+  EXPECT_EQ(r.report.border, SMP::Discrete_lie_flow_border::SQUARE) << "the square was not detected";
+}
+
+/// The library's corner choice (choose_square_border_corners) for the square.
+bool library_square_init(const SM& sm, Square_init& init)
+{
+  const auto c = SMP::choose_square_border_corners(sm, first_border_halfedge(sm));
+  if(!c) return false;
+  init = Square_init(SMP::Square_border_arc_length_parameterizer_3<SM>((*c)[0], (*c)[1], (*c)[2], (*c)[3]));
+  return true;
+}
+
+// The square with the corners the library chooses: status OK on every mesh.
+// KNOWN FAILURE (library) on blob.off, whose border is the 4 corners only:
+// see Boundary_curve.FourCornerSquareIsASquare.
+TEST_P(Certified_disk, Square)
+{
+  SM sm;
+  ASSERT_TRUE(read_mesh(GetParam(), sm));
+  Square_init init;
+  ASSERT_TRUE(library_square_init(sm, init)) << "choose_square_border_corners found no corners";
+  const Flow_run r = run_dlf<Square_dlf>(sm, init, certified_options());
+  expect_certified_run(r, Border_shape::SQUARE, 2.02);
+  EXPECT_EQ(r.report.border, SMP::Discrete_lie_flow_border::SQUARE) << "the square was not detected";
+}
+
+INSTANTIATE_TEST_SUITE_P(DataSet, Certified_disk, ::testing::ValuesIn(disk_meshes), test_name);
+
+TEST_P(Certified_large_disk, Circle)
+{
+  SM sm;
+  ASSERT_TRUE(read_mesh(GetParam(), sm));
+  ASSERT_EQ(border_loops(sm), 1u);
+  SMP::Discrete_lie_flow_options o = certified_options();
+  const Flow_run r = run_dlf<Circle_dlf>(sm, Circle_init(), o);
+  expect_certified_run(r, Border_shape::CIRCLE, 2.02);
+}
+
+INSTANTIATE_TEST_SUITE_P(DataSet, Certified_large_disk, ::testing::ValuesIn(large_disk_meshes), test_name);
+
+// ---------------------------------------------------------------------------
+// Paper mode
+// ---------------------------------------------------------------------------
+
+void expect_paper_run(const Flow_run& r, Border_shape shape)
+{
+  ASSERT_EQ(r.code, SMP::OK) << SMP::discrete_lie_flow_error_name(r.code) << ": " << r.report.message;
+  const std::size_t n = r.mesh.xyz.size();
+  ASSERT_EQ(r.uv.size(), n);
+  std::vector<Tri> dom(r.report.domain_faces.begin(), r.report.domain_faces.end());
+  ASSERT_TRUE(same_disk(dom, r.mesh.faces, n));
+
+  // The flowing triangulation: positive (exact), tiling the border polygon.
+  const Signs sd = exact_signs(r.uv, dom);
+  EXPECT_EQ(sd.neg, 0u) << "inverted flowing faces (exact)";
+  EXPECT_EQ(sd.zero, 0u) << "degenerate flowing faces (exact)";
+  expect_embedding(r.uv, dom, r.mesh.border, "flowing faces");
+  EXPECT_EQ(r.report.flowing_inverted_faces, 0u);
+
+  // The caller's folds are counted right (against the flowing orientation).
+  const Signs sc = exact_signs(r.uv, r.mesh.faces);
+  const Signs s0 = exact_signs(r.uv0, r.mesh.faces);
+  const std::size_t caller_bad = (s0.neg == 0 ? sc.neg : sc.pos) + sc.zero;
+  EXPECT_EQ(r.report.caller_inverted_faces, caller_bad);
+
+  // Locally Delaunay where a flip is possible.
+  // KNOWN FAILURE (library, paper_flow.h): the returned triangulation is the
+  // one flipped before the last accepted step, not re-flipped at the returned
+  // positions.
+  std::size_t refused = 0;
+  const std::size_t bad = non_delaunay_edges(r.uv, dom, refused);
+  EXPECT_EQ(bad, 0u) << bad << " interior edges of the final flowing triangulation are not locally Delaunay "
+                     << "(and their quad is strictly convex); " << refused << " more with a non-convex quad";
+
+  // d_area on the flowing triangulation, recomputed with 3D targets of its faces.
+  const double d = d_area(r.mesh.xyz, r.uv, dom);
+  EXPECT_LE(d, 2.06); // KNOWN FAILURE on the square: three_peaks 2.11, mushroom 2.08
+  // The flow guards flat 3D triangles made by flips (target ≥ 1e-3 of the
+  // smallest input face), which moves its figure a little then.
+  const bool flat = smallest_relative_area_3(r.mesh.xyz, dom) < 1e-3 * smallest_relative_area_3(r.mesh.xyz, r.mesh.faces);
+  EXPECT_NEAR(d, r.report.final_d_area, (flat ? 1e-3 : 1e-9) * d);
+  EXPECT_LE(r.report.iterations, 150u); // the cap; KNOWN FAILURE: three_peaks (circle) takes 164
+  expect_on_border(r, shape, dom);
+  expect_report_totals(r, dom);
+}
+
+TEST_P(Paper_disk, Circle)
+{
+  SM sm;
+  ASSERT_TRUE(read_mesh(GetParam(), sm));
+  const Flow_run r = run_dlf<Circle_dlf>(sm, Circle_init(), paper_options());
+  expect_paper_run(r, Border_shape::CIRCLE);
+}
+
+TEST_P(Paper_disk, Square)
+{
+  SM sm;
+  ASSERT_TRUE(read_mesh(GetParam(), sm));
+  Square_init init;
+  ASSERT_TRUE(library_square_init(sm, init)) << "choose_square_border_corners found no corners";
+  const Flow_run r = run_dlf<Square_dlf>(sm, init, paper_options());
+  expect_paper_run(r, Border_shape::SQUARE);
+}
+
+INSTANTIATE_TEST_SUITE_P(DataSet, Paper_disk, ::testing::ValuesIn(mild_meshes), test_name);
+
+// ---------------------------------------------------------------------------
+// Stall: the paper's flow on a fixed connectivity (no flips) drives a vertex
+// onto an edge of a strongly curved disk; the flow must detect it and return
+// its best iterate, valid and not worse than the start.
+// ---------------------------------------------------------------------------
+
+TEST(Paper_stall, FixedConnectivityMushroom)
+{
+  SM sm;
+  ASSERT_TRUE(read_mesh("mushroom", sm));
+  SMP::Discrete_lie_flow_options o = paper_options();
+  o.delaunay_flips = false;
+  const Flow_run r = run_dlf<Circle_dlf>(sm, Circle_init(), o);
+  ASSERT_EQ(r.code, SMP::OK) << r.report.message;
+  EXPECT_TRUE(r.report.stop_reason == SMP::Discrete_lie_flow_stop_reason::STALLED ||
+              r.report.stop_reason == SMP::Discrete_lie_flow_stop_reason::PLATEAU)
+    << "stop reason " << SMP::stop_reason_name(r.report.stop_reason) << " after " << r.report.iterations << " iterations";
+  EXPECT_LT(r.report.iterations, o.max_iterations);
+  // Without flips the flowing triangulation is the caller's.
+  const Signs s0 = exact_signs(r.uv0, r.mesh.faces), s = exact_signs(r.uv, r.mesh.faces);
+  EXPECT_EQ(s.zero, 0u);
+  EXPECT_EQ(s.pos, s0.pos);
+  EXPECT_EQ(s.neg, s0.neg);
+  EXPECT_EQ(r.report.caller_inverted_faces, 0u);
+  expect_embedding(r.uv, r.mesh.faces, r.mesh.border, "best iterate");
+  const double d0 = d_area(r.mesh.xyz, r.uv0, r.mesh.faces), d = d_area(r.mesh.xyz, r.uv, r.mesh.faces);
+  EXPECT_LE(d, d0);
+  EXPECT_NEAR(d, r.report.final_d_area, 1e-9 * d);
+  // The best iterate: no recorded iterate is better than what is returned.
+  for(const auto& h : r.report.history) EXPECT_GE(h.d_area, r.report.final_d_area * (1 - 1e-12));
+  expect_on_border(r, Border_shape::CIRCLE, r.mesh.faces);
+}
+
+// ---------------------------------------------------------------------------
+// Invariance under scaling the mesh
+// ---------------------------------------------------------------------------
+
+class Scaling : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Scaling, CertifiedCircle)
+{
+  SM ref;
+  ASSERT_TRUE(read_mesh(GetParam(), ref));
+  const Flow_run r1 = run_dlf<Circle_dlf>(ref, Circle_init(), certified_options());
+  ASSERT_EQ(r1.code, SMP::OK) << r1.report.message;
+  for(double s : { 1e-8, 1e8 }) {
+    SM sm;
+    ASSERT_TRUE(read_mesh(GetParam(), sm));
+    for(SM_vertex v : vertices(sm)) {
+      const K::Point_3 p = sm.point(v);
+      sm.point(v) = K::Point_3(p.x() * s, p.y() * s, p.z() * s);
+    }
+    const Flow_run r = run_dlf<Circle_dlf>(sm, Circle_init(), certified_options());
+    ASSERT_EQ(r.code, SMP::OK) << "scale " << s << ": " << r.report.message;
+    EXPECT_EQ(r.report.iterations, r1.report.iterations) << "scale " << s;
+    double scale = 0, diff = 0;
+    for(std::size_t i = 0; i < r.uv.size(); ++i) {
+      scale = (std::max)(scale, std::hypot(r1.uv[i][0], r1.uv[i][1]));
+      diff = (std::max)(diff, std::hypot(r.uv[i][0] - r1.uv[i][0], r.uv[i][1] - r1.uv[i][1]));
+    }
+    EXPECT_LE(diff, 1e-9 * scale) << "scale " << s << ": uv differ";
+    EXPECT_NEAR(r.report.final_d_area, r1.report.final_d_area, 1e-9) << "scale " << s;
+    EXPECT_EQ(exact_signs(r.uv, r.mesh.faces).zero, 0u);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(DataSet, Scaling, ::testing::Values("nefertiti", "patch-01", "mushroom"), test_name);
+
+} // namespace
