@@ -27,21 +27,10 @@ namespace SMP = CGAL::Surface_mesh_parameterization;
 // Insertion order, so that a report reads top-down: status first, history last.
 using json = nlohmann::ordered_json;
 
-const char* border_name(SMP::Discrete_lie_flow_border b)
-{
-  switch(b) {
-  case SMP::Discrete_lie_flow_border::AUTOMATIC: return "automatic";
-  case SMP::Discrete_lie_flow_border::CIRCLE: return "circle";
-  case SMP::Discrete_lie_flow_border::SQUARE: return "square";
-  case SMP::Discrete_lie_flow_border::FREE: return "free";
-  }
-  return "unknown";
-}
-
 // The border the flow used; the requested one if the flow did not start.
 std::string used_border(const Disk_run& run, const Disk_settings& s)
 {
-  return run.report.border == SMP::Discrete_lie_flow_border::AUTOMATIC ? s.border : border_name(run.report.border);
+  return run.report.border == SMP::Discrete_lie_flow_border::AUTOMATIC ? s.border : SMP::border_name(run.report.border);
 }
 
 // The parameterizer's codes that blame the input rather than the flow (exit
