@@ -362,7 +362,7 @@ TEST(Errors, EveryCodeHasAMessageAndAName)
                         SMP::ERROR_NO_TOPOLOGICAL_BALL, SMP::ERROR_BORDER_TOO_SHORT, SMP::ERROR_NON_CONVEX_BORDER,
                         SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, SMP::ERROR_NO_1_TO_1_MAPPING, SMP::ERROR_WRONG_PARAMETER,
                         SMP::ERROR_INITIAL_MAP_FOLDED, SMP::ERROR_DEGENERATE_INPUT, SMP::ERROR_INVALID_DENSITY,
-                        SMP::ERROR_FLOW_STALLED, SMP::ERROR_FOLDS_ON_INPUT_CONNECTIVITY, SMP::ERROR_NOT_GENUS_0 };
+                        SMP::ERROR_FLOW_STALLED, SMP::ERROR_NOT_GENUS_0 };
   for(int c : codes) {
     messages.insert(SMP::discrete_lie_flow_error_message(c));
     names.insert(SMP::discrete_lie_flow_error_name(c));
