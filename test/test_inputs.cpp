@@ -31,25 +31,6 @@
 #include <string>
 #include <vector>
 
-// WORKAROUND for a library bug, so that the rest of this suite builds:
-// Discrete_lie_flow_parameterizer_3::gather() calls `degree(f, mesh)` on a
-// face, which CGAL 5.5 does not define for Seam_mesh; without this overload
-// the parameterizer does not compile for Seam_mesh at all. The overload counts
-// its calls, and Mesh_types.SeamMeshOfAClosedSphereTemporaryAndNamed fails
-// while the library needs it (once fixed, this is dead code and may go).
-int seam_face_degree_workaround_calls = 0;
-namespace CGAL {
-template <class TM, class SEM, class SVM>
-typename boost::graph_traits<Seam_mesh<TM, SEM, SVM> >::degree_size_type
-degree(typename boost::graph_traits<Seam_mesh<TM, SEM, SVM> >::face_descriptor f, const Seam_mesh<TM, SEM, SVM>& m)
-{
-  ++seam_face_degree_workaround_calls;
-  typename boost::graph_traits<Seam_mesh<TM, SEM, SVM> >::degree_size_type n = 0;
-  for(auto h : halfedges_around_face(halfedge(f, m), m)) { (void)h; ++n; }
-  return n;
-}
-} // namespace CGAL
-
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace D = CGAL::Surface_mesh_parameterization::internal::dlf;
 
@@ -341,10 +322,6 @@ TEST(Mesh_types, SeamMeshOfAClosedSphereTemporaryAndNamed)
   EXPECT_EQ(p.report().status, SMP::OK);
   EXPECT_GT(p.report().iterations, 0u);
   EXPECT_NEAR(p.report().final_d_area, d_area(m), 1e-9);
-  // KNOWN FAILURE (library): see the workaround at the top of this file.
-  EXPECT_EQ(seam_face_degree_workaround_calls, 0)
-    << "Discrete_lie_flow_parameterizer_3 calls degree(face, mesh), which CGAL does not define for Seam_mesh: "
-       "without this test's workaround it does not compile for Seam_mesh";
   // The two sides of the seam are apart in the domain.
   std::set<std::pair<double, double> > distinct;
   for(const V2& q : m.uv) distinct.insert(std::make_pair(q[0], q[1]));
@@ -384,9 +361,7 @@ TEST(Errors, EmptyMesh)
 }
 
 // A quad among triangles; the quad is not the first face the flow meets.
-// KNOWN FAILURE (library, Discrete_lie_flow_parameterizer_3.h, gather()):
-// the message is built from `P.faces.size()`, which is 0 at that point, so it
-// always says "face 0 is not a triangle", whichever face it is.
+// The message names the quad by its vertices.
 TEST(Errors, NonTriangularMesh)
 {
   SM sm = grid(3);
@@ -493,9 +468,7 @@ TEST(Errors, DegenerateInputNonFiniteCoordinate)
   }
 }
 
-// KNOWN FAILURE (library): the density messages name the face by its index in
-// the flow's internal order (a walk from bhd), which the caller cannot relate
-// to its own faces; the zero-area message names the vertices instead.
+// The density messages name the face by its vertices, as the zero-area one does.
 TEST(Errors, InvalidDensity)
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -382,12 +382,8 @@ TEST(Boundary_curve, CircleKeepsVerticesOnTheCircle)
   }
 }
 
-// BUG (library, boundary_curve.h): the circle is taken as centred on the
-// vertices' centroid. With vertices spaced unevenly on a circle (CGAL's
-// Circular_border_arc_length_parameterizer_3 spaces them by arc length) the
-// centroid is not the centre: AUTOMATIC then falls back to FREE, or (within
-// its 1e-7 tolerance) builds a slightly different circle, and the boundary
-// vertices leave the initial circle.
+// Vertices spaced unevenly on a circle (CGAL's arc-length circle border) are
+// not centred on their centroid: the circle must still be detected and kept.
 TEST(Boundary_curve, UnevenlySpacedCircleIsDetectedAndReproduced)
 {
   const std::vector<Vec2> pts = circle_points({ 0., 0.3, 2.0, 4.0, 5.5 });
@@ -425,9 +421,8 @@ TEST(Boundary_curve, SquareCornersFixedAndSidesKept)
   }
 }
 
-// BUG (library, boundary_curve.h): a square border with only its four corners
-// also "fits a circle", and AUTOMATIC tests the circle first; the corners then
-// slide on the circumcircle (blob.off with a square border).
+// A square border with only its four corners also fits a circle: it must be
+// taken as a square (corners fixed).
 TEST(Boundary_curve, FourCornerSquareIsASquare)
 {
   const std::vector<Vec2> pts = { {{ 0, 0 }}, {{ 1, 0 }}, {{ 1, 1 }}, {{ 0, 1 }} };
