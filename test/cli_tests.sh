@@ -47,6 +47,14 @@ count_lines() { grep -c "^$2" "$1"; }
 NEF="$MESHES/nefertiti.off"
 [ -r "$NEF" ] || { echo "FAIL: $NEF not found"; exit 1; }
 
+# --- sphere -------------------------------------------------------------------
+"$DLF" sphere "$MESHES/sphere.off" -o sph.obj --report sph.json > sph.out 2> sph.err
+check "sphere run exits 0" equals "$?" 0
+check "sphere report: status ok" equals "$(json_get sph.json "" status)" ok
+check "sphere report: 0 inverted faces" equals "$(json_get sph.json final inverted_faces)" 0
+check "sphere OBJ: one v per input vertex" equals "$(count_lines sph.obj 'v ')" 162
+check "sphere OBJ: points on the unit sphere" awk '/^v / { r = sqrt($2*$2 + $3*$3 + $4*$4); if(r < 1 - 1e-12 || r > 1 + 1e-12) bad = 1 } END { exit bad }' sph.obj
+
 # --- help --------------------------------------------------------------------
 check "dlf --help" bash -c "'$DLF' --help | grep -q 'dlf disk'"
 check "dlf disk --help has examples" bash -c "'$DLF' disk --help | grep -q 'Examples'"
@@ -128,7 +136,9 @@ cp "$NEF" input.off
 expect_error() { # expect_error DESCRIPTION EXPECTED_CODE MESSAGE_PATTERN ARGS...
   local what=$1 code=$2 pattern=$3; shift 3
   rm -rf out; mkdir out
-  "$DLF" "$@" -o out/o.obj --report out/r.json --svg out/l.svg --domain-mesh out/d.obj > out.txt 2> err.txt
+  local outputs=(-o out/o.obj --report out/r.json --svg out/l.svg --domain-mesh out/d.obj)
+  [ "$1" = sphere ] && outputs=(-o out/o.obj --report out/r.json)
+  "$DLF" "$@" "${outputs[@]}" > out.txt 2> err.txt
   local rc=$?
   checks=$((checks + 1))
   if [ "$rc" = 0 ]; then fail "$what: exit 0"; return; fi
@@ -153,7 +163,8 @@ expect_error "--border square with lscm" 1 "fixed-border" disk input.off --init 
 expect_error "--mu out of range" 1 "--mu" disk input.off --mu 1.5
 expect_error "missing INPUT" 1 "missing INPUT" disk
 expect_error "unknown command" 1 "unknown command" frobnicate input.off
-expect_error "sphere is not available" 2 "not available yet" sphere "$MESHES/sphere.off"
+expect_error "sphere: torus refused" 1 "genus" sphere "$MESHES/pipe.off"
+expect_error "sphere: open mesh refused" 1 "ERROR_NOT_GENUS_0" sphere "$NEF"
 
 "$DLF" disk input.off -o no_such_dir/o.obj > /dev/null 2> err.txt
 check "output into a missing directory fails before the flow" bash -c "[ $? = 1 ] && grep -q 'does not exist' err.txt"

@@ -23,8 +23,7 @@ int main(int argc, char** argv)
   try {
     if(command == "disk") return disk_command(args);
     if(command == "score") return score_command(args);
-    if(command == "sphere")
-      throw Cli_error("'dlf sphere' is not available yet (the spherical flow is not implemented)", EXIT_FLOW_ERROR);
+    if(command == "sphere") return sphere_command(args);
     if(command == "--help" || command == "-h" || command == "help") {
       print_main_help(std::cout);
       return EXIT_OK;

@@ -1,0 +1,194 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// `dlf sphere`: map a closed genus-0 mesh onto the unit sphere; write the
+// sphere points in input vertex order with the input faces (all outputs or
+// none), and the JSON report of DESIGN.md.
+
+#include "cli_error.h"
+#include "commands.h"
+#include "metrics.h"
+#include "mesh_input.h"
+#include "output_files.h"
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_sphere_3.h>
+
+#include <boost/program_options.hpp>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <iomanip>
+#include <iostream>
+
+namespace dlf_cli {
+
+namespace {
+
+namespace po = boost::program_options;
+namespace SMP = CGAL::Surface_mesh_parameterization;
+using json = nlohmann::ordered_json;
+typedef CGAL::Simple_cartesian<double> Kernel;
+typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
+
+const char* sphere_help =
+  "Usage: dlf sphere INPUT [-o OUT.obj] [--report R.json] [options]\n"
+  "\n"
+  "Maps a closed genus-0 triangle mesh onto the unit sphere, area-preserving,\n"
+  "every triangle positively oriented (exact predicate). OUT.obj holds the\n"
+  "sphere points as 'v' lines in input vertex order and the input faces.\n"
+  "\n"
+  "Examples:\n"
+  "  dlf sphere build/data/meshes/cow.off -o cow_sphere.obj --report cow.json\n"
+  "  dlf sphere bunny.off --tolerance 1e-3 --verbose\n";
+
+struct Sphere_settings
+{
+  std::string input, output, report;
+  SMP::Discrete_lie_flow_options options;
+  bool quiet = false, verbose = false;
+};
+
+bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_settings& s)
+{
+  po::options_description visible("Options");
+  visible.add_options()
+    ("help,h", "this help")
+    ("output,o", po::value<std::string>(&s.output), "OBJ with the sphere points")
+    ("report", po::value<std::string>(&s.report), "JSON report")
+    ("tolerance", po::value<double>(&s.options.tolerance), "stop when d_area - 2 <= this (default 0.01)")
+    ("max-iterations", po::value<std::size_t>(&s.options.max_iterations), "iteration cap (default 500)")
+    ("mu", po::value<double>(&s.options.mu), "fraction of the critical step, in (0, 1) (default 0.8)")
+    ("history", "per-iteration history in the report")
+    ("quiet", "print nothing on success")
+    ("verbose", "one line per iteration");
+  po::options_description all;
+  all.add(visible);
+  all.add_options()("input", po::value<std::vector<std::string> >());
+  po::positional_options_description positional;
+  positional.add("input", -1);
+  po::variables_map vm;
+  try {
+    const int style = po::command_line_style::default_style & ~po::command_line_style::allow_guessing;
+    po::store(po::command_line_parser(args).options(all).positional(positional).style(style).run(), vm);
+    po::notify(vm);
+  } catch(const po::error& e) {
+    throw Cli_error(std::string(e.what()) + " (see 'dlf sphere --help')");
+  }
+  if(vm.count("help")) {
+    std::cout << sphere_help << "\n" << visible;
+    return false;
+  }
+  const std::vector<std::string> inputs = vm.count("input") ? vm["input"].as<std::vector<std::string> >()
+                                                              : std::vector<std::string>();
+  if(inputs.size() != 1) throw Cli_error("dlf sphere needs exactly one INPUT mesh (see 'dlf sphere --help')");
+  s.input = inputs[0];
+  if(!(s.options.tolerance >= 0)) throw Cli_error("--tolerance must be >= 0");
+  if(vm.count("mu") && !(s.options.mu > 0 && s.options.mu < 1)) throw Cli_error("--mu must be in (0, 1)");
+  if(vm.count("quiet") && vm.count("verbose")) throw Cli_error("--quiet and --verbose exclude each other");
+  s.quiet = vm.count("quiet") > 0;
+  s.verbose = vm.count("verbose") > 0;
+  s.options.record_history = vm.count("history") > 0;
+  return true;
+}
+
+bool print_iteration(const SMP::Discrete_lie_flow_iteration& it)
+{
+  std::printf("  iteration %4zu  d_area %.10g  step %.3g (critical %.3g)  backtracks %zu  %.2f s\n", it.iteration,
+              it.d_area, it.step, it.critical_step, it.backtracks, it.seconds);
+  std::fflush(stdout);
+  return true;
+}
+
+} // namespace
+
+int sphere_command(const std::vector<std::string>& args)
+{
+  Sphere_settings s;
+  if(!parse_sphere_arguments(args, s)) return EXIT_OK;
+  Output_files outputs;
+  if(!s.output.empty()) outputs.declare(s.output, "-o");
+  if(!s.report.empty()) outputs.declare(s.report, "--report");
+
+  const Indexed_mesh input = read_triangle_mesh(s.input);
+  // A Surface_mesh in input order, so that vertex i is input vertex i.
+  Mesh mesh;
+  for(const Vec3& p : input.xyz) mesh.add_vertex(Kernel::Point_3(p[0], p[1], p[2]));
+  for(std::size_t f = 0; f < input.faces.size(); ++f) {
+    const Triangle& t = input.faces[f];
+    if(mesh.add_face(Mesh::Vertex_index(t[0]), Mesh::Vertex_index(t[1]), Mesh::Vertex_index(t[2])) == Mesh::null_face())
+      throw Cli_error(s.input + ": face " + std::to_string(f) + " makes the mesh non-manifold");
+  }
+  if(s.verbose) s.options.callback = &print_iteration;
+
+  const auto start = std::chrono::steady_clock::now();
+  SMP::Discrete_lie_flow_sphere_parameterizer_3<Mesh> dlf(s.options);
+  Mesh::Property_map<Mesh::Vertex_index, Kernel::Point_3> sphere =
+    mesh.add_property_map<Mesh::Vertex_index, Kernel::Point_3>("v:dlf_sphere").first;
+  const SMP::Error_code status = dlf.parameterize(mesh, sphere);
+  const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const SMP::Discrete_lie_flow_sphere_report& R = dlf.report();
+  const bool ok = status == SMP::OK;
+  // Input the command cannot use is refused without output, as `dlf disk`
+  // does; a flow error still gets its report.
+  const int code = int(status);
+  const bool input_error = code == SMP::ERROR_NOT_GENUS_0 || code == SMP::ERROR_NON_TRIANGULAR_MESH ||
+                           code == SMP::ERROR_DEGENERATE_INPUT || code == SMP::ERROR_EMPTY_MESH ||
+                           code == SMP::ERROR_INVALID_DENSITY;
+
+  if(ok && !s.output.empty())
+    outputs.write(s.output, [&](std::ostream& o) {
+      o << "# dlf sphere " << s.input << ": d_area " << std::setprecision(10) << R.final_metrics.d_area << "\n"
+        << std::setprecision(17);
+      for(Mesh::Vertex_index v : mesh.vertices()) {
+        const Kernel::Point_3& p = sphere[v];
+        o << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+      }
+      for(const Triangle& t : input.faces) o << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+    });
+  if(!s.report.empty() && !input_error) {
+    json j;
+    j["status"] = SMP::discrete_lie_flow_error_name(status);
+    j["message"] = R.message;
+    j["input"] = s.input;
+    j["vertices"] = input.xyz.size();
+    j["faces"] = input.faces.size();
+    j["iterations"] = R.iterations;
+    j["stop_reason"] = SMP::stop_reason_name(R.stop_reason);
+    j["seconds"] = { { "initial", R.seconds_initial }, { "flow", R.seconds_flow }, { "total", total } };
+    j["initial"] = ok ? metrics_to_json(R.initial_metrics) : json(nullptr);
+    j["final"] = ok ? metrics_to_json(R.final_metrics) : json(nullptr);
+    j["puncture_face"] = R.puncture_face;
+    j["rejected_by_exact_check"] = R.rejected_by_exact_check;
+    if(s.options.record_history) {
+      json h = json::array();
+      for(const SMP::Discrete_lie_flow_iteration& it : R.history)
+        h.push_back({ { "iteration", it.iteration }, { "step", it.step }, { "critical_step", it.critical_step },
+                      { "d_area", it.d_area }, { "backtracks", it.backtracks }, { "seconds", it.seconds } });
+      j["history"] = h;
+    }
+    outputs.write(s.report, [&](std::ostream& o) { o << j.dump(2) << '\n'; });
+  }
+  outputs.commit();
+
+  if(!s.quiet && ok) {
+    std::cout << std::setprecision(8) << "dlf sphere " << s.input << ": " << input.xyz.size() << " vertices, "
+              << input.faces.size() << " faces\n"
+              << "  status " << SMP::discrete_lie_flow_error_name(status) << ": " << R.message << "\n";
+    if(ok)
+      std::cout << "  iterations " << R.iterations << " (" << SMP::stop_reason_name(R.stop_reason) << ")\n"
+                << "  d_area " << R.initial_metrics.d_area << " -> " << R.final_metrics.d_area << " (optimum 2)\n"
+                << "  inverted faces " << R.final_metrics.inverted_faces << "\n"
+                << std::setprecision(3) << "  seconds: initial map " << R.seconds_initial << ", flow " << R.seconds_flow
+                << ", total " << total << "\n";
+    for(const std::string& w : outputs.committed()) std::cout << "  wrote " << w << "\n";
+  }
+  if(!ok)
+    throw Cli_error(s.input + ": " + SMP::discrete_lie_flow_error_name(status) + ": " + R.message,
+                    input_error ? EXIT_BAD_INPUT : EXIT_FLOW_ERROR);
+  return EXIT_OK;
+}
+
+} // namespace dlf_cli

@@ -1,0 +1,255 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// A certified bijective initial map of a closed genus-0 mesh onto the unit
+// sphere: puncture one face, map the remaining disk by Tutte's barycentric
+// embedding with the punctured face's three vertices on an equilateral
+// triangle (a convex boundary, so the embedding is bijective in exact
+// arithmetic), scale the plane by the factor that minimises D_area after
+// projection, and lift it by inverse stereographic projection (the punctured
+// face becomes the cap around the north pole). The result is accepted only
+// when every face is positively oriented by CGAL's exact predicate on the
+// stored doubles; otherwise other punctures are tried.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_SPHERE_INITIAL_MAP_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_SPHERE_INITIAL_MAP_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certification.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certified_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_problem.h>
+
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace dlf {
+
+/// What the initial map did.
+struct Sphere_initial_outcome
+{
+  bool certified = false;
+  int puncture = -1;          ///< the punctured face
+  double scale = 0;           ///< the plane scale s of the accepted map
+  double d_area = 0;          ///< D_area of the accepted map
+  std::size_t attempts = 0;   ///< punctures tried
+  std::string message;        ///< why no map was certified
+};
+
+/// Punctures worth trying, best first: large faces (they become the polar
+/// cap, whose area the projection controls) that are well shaped (a sliver
+/// gives a thin boundary triangle). Score: area × shape quality 4√3 A / Σ ℓ².
+inline std::vector<int> puncture_candidates(const Sphere_problem& P, std::size_t count)
+{
+  const std::size_t F = P.faces.size();
+  std::vector<double> score(F);
+  for(std::size_t f = 0; f < F; ++f) {
+    const Face& t = P.faces[f];
+    const Vec3 &a = P.xyz[std::size_t(t[0])], &b = P.xyz[std::size_t(t[1])], &c = P.xyz[std::size_t(t[2])];
+    const double A = triangle_area_3(a, b, c);
+    const double l2 = dot(sub(b, a), sub(b, a)) + dot(sub(c, b), sub(c, b)) + dot(sub(a, c), sub(a, c));
+    score[f] = A * (4 * std::sqrt(3.) * A / l2);
+  }
+  std::vector<int> order(F);
+  std::iota(order.begin(), order.end(), 0);
+  count = (std::min)(count, F);
+  std::partial_sort(order.begin(), order.begin() + std::ptrdiff_t(count), order.end(),
+                    [&score](int x, int y) { return score[std::size_t(x)] > score[std::size_t(y)]; });
+  order.resize(count);
+  return order;
+}
+
+/// Tutte's embedding (uniform weights) of the mesh minus face `puncture`, its
+/// vertices (a, b, c) on the unit-circumradius equilateral triangle, ordered
+/// so that the disk's faces are counter-clockwise. False if the solve fails.
+template <class EigenSolver>
+bool punctured_tutte(const Sphere_problem& P, int puncture, std::vector<Vec2>& uv)
+{
+  const std::size_t n = P.xyz.size();
+  const Face& hole = P.faces[std::size_t(puncture)];
+  std::vector<int> idx(n, 0);
+  for(int k = 0; k < 3; ++k) idx[std::size_t(hole[k])] = -1;
+  int ni = 0;
+  for(std::size_t v = 0; v < n; ++v)
+    if(idx[v] == 0) idx[v] = ni++; else idx[v] = -1;
+  uv.assign(n, Vec2{{ 0, 0 }});
+  // The disk's border, as its faces see it, runs a → c → b: place it counter-clockwise.
+  const double pi = 3.14159265358979323846;
+  const int order[3] = { hole[0], hole[2], hole[1] };
+  for(int k = 0; k < 3; ++k)
+    uv[std::size_t(order[k])] = {{ std::cos(pi / 2 + 2 * pi * k / 3), std::sin(pi / 2 + 2 * pi * k / 3) }};
+  if(ni == 0) return true;
+  // Each edge appears as two directed edges in a closed mesh: ½ from each.
+  std::vector<Eigen::Triplet<double> > trip;
+  trip.reserve(P.faces.size() * 6);
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(ni, 2);
+  for(const Face& t : P.faces)
+    for(int k = 0; k < 3; ++k) {
+      const int i = t[k], j = t[(k + 1) % 3];
+      const int a = idx[std::size_t(i)], b = idx[std::size_t(j)];
+      if(a >= 0) trip.emplace_back(a, a, 0.5);
+      if(b >= 0) trip.emplace_back(b, b, 0.5);
+      if(a >= 0 && b >= 0) { trip.emplace_back(a, b, -0.5); trip.emplace_back(b, a, -0.5); }
+      else if(a >= 0) { rhs(a, 0) += 0.5 * uv[std::size_t(j)][0]; rhs(a, 1) += 0.5 * uv[std::size_t(j)][1]; }
+      else if(b >= 0) { rhs(b, 0) += 0.5 * uv[std::size_t(i)][0]; rhs(b, 1) += 0.5 * uv[std::size_t(i)][1]; }
+    }
+  Sparse_matrix L(ni, ni);
+  L.setFromTriplets(trip.begin(), trip.end());
+  L.makeCompressed();
+  EigenSolver solver;
+  solver.compute(L);
+  if(solver.info() != Eigen::Success) return false;
+  for(int c = 0; c < 2; ++c) {
+    const Eigen::VectorXd x = solver.solve(Eigen::VectorXd(rhs.col(c)));
+    if(solver.info() != Eigen::Success || !x.allFinite()) return false;
+    for(std::size_t v = 0; v < n; ++v)
+      if(idx[v] >= 0) uv[v][c] = x[idx[v]];
+  }
+  return true;
+}
+
+/// Inverse stereographic projection of s·(z − centre), mirrored in y when
+/// `mirror` (the projection reverses orientation as seen from outside).
+inline void lift_to_sphere(const std::vector<Vec2>& uv, double s, const Vec2& centre, bool mirror, std::vector<Vec3>& p)
+{
+  p.resize(uv.size());
+  for(std::size_t v = 0; v < uv.size(); ++v) {
+    const double x = s * (uv[v][0] - centre[0]), y = s * (uv[v][1] - centre[1]);
+    const double r2 = x * x + y * y;
+    // |(2x, 2y, r² − 1)| = r² + 1 exactly; normalising again only removes rounding.
+    p[v] = normalized(Vec3{{ 2 * x, mirror ? -2 * y : 2 * y, r2 - 1 }});
+  }
+}
+
+/// Searches the scale s (log-grid, then golden section) that minimises
+/// D_area of the lifted map; +∞ energy when some face is not positive in
+/// floating point. Returns the best log s and its energy.
+inline std::pair<double, double> best_lift_scale(const Sphere_problem& P, const Area_barrier_energy& energy,
+                                                 const std::vector<Vec2>& uv, const Vec2& centre, bool mirror)
+{
+  std::vector<Vec3> p;
+  std::vector<double> u;
+  auto E = [&](double t) {
+    lift_to_sphere(uv, std::exp(t), centre, mirror, p);
+    cone_areas_sphere(p, P.faces, u);
+    return energy.value(u);
+  };
+  double best_t = 0, best_E = std::numeric_limits<double>::infinity();
+  for(double t = -10; t <= 40; t += 0.5) {
+    const double e = E(t);
+    if(e < best_E) { best_E = e; best_t = t; }
+  }
+  if(!std::isfinite(best_E)) return std::make_pair(best_t, best_E);
+  // Golden section on [t − ½, t + ½] (E is unimodal in practice near its grid minimum).
+  const double g = 0.5 * (std::sqrt(5.) - 1);
+  double lo = best_t - 0.5, hi = best_t + 0.5;
+  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+  double e1 = E(x1), e2 = E(x2);
+  for(int it = 0; it < 30; ++it) {
+    if(e1 < e2) { hi = x2; x2 = x1; e2 = e1; x1 = hi - g * (hi - lo); e1 = E(x1); }
+    else { lo = x1; x1 = x2; e1 = e2; x2 = lo + g * (hi - lo); e2 = E(x2); }
+  }
+  if(e1 < best_E) { best_E = e1; best_t = x1; }
+  if(e2 < best_E) { best_E = e2; best_t = x2; }
+  return std::make_pair(best_t, best_E);
+}
+
+/// Extremal faces: those with the largest and smallest centroid coordinate
+/// along each axis and the one farthest from the centre of mass. On a shape
+/// with protrusions they sit at protrusion tips, whose puncture keeps that
+/// protrusion out of the compressed core of the Tutte map.
+inline std::vector<int> extremal_faces(const Sphere_problem& P)
+{
+  const std::size_t F = P.faces.size();
+  std::vector<Vec3> c(F);
+  Vec3 m{{ 0, 0, 0 }};
+  double A = 0;
+  for(std::size_t f = 0; f < F; ++f) {
+    const Face& t = P.faces[f];
+    for(int j = 0; j < 3; ++j)
+      c[f][std::size_t(j)] = (P.xyz[std::size_t(t[0])][std::size_t(j)] + P.xyz[std::size_t(t[1])][std::size_t(j)] +
+                              P.xyz[std::size_t(t[2])][std::size_t(j)]) / 3;
+    for(int j = 0; j < 3; ++j) m[std::size_t(j)] += P.target[f] * c[f][std::size_t(j)];
+    A += P.target[f];
+  }
+  for(double& x : m) x /= A;
+  std::vector<int> out;
+  for(int j = 0; j < 3; ++j) {
+    std::size_t lo = 0, hi = 0;
+    for(std::size_t f = 1; f < F; ++f) {
+      if(c[f][std::size_t(j)] < c[lo][std::size_t(j)]) lo = f;
+      if(c[f][std::size_t(j)] > c[hi][std::size_t(j)]) hi = f;
+    }
+    out.push_back(int(lo));
+    out.push_back(int(hi));
+  }
+  std::size_t far = 0;
+  for(std::size_t f = 1; f < F; ++f)
+    if(dot(sub(c[f], m), sub(c[f], m)) > dot(sub(c[far], m), sub(c[far], m))) far = f;
+  out.push_back(int(far));
+  return out;
+}
+
+/// The certified initial map. Candidates: the `well_shaped` best-scored
+/// punctures, then (when `extremal`) the faces at the shape's extremes. Each
+/// is mapped and lifted at its best scale; the certified one of least energy
+/// is kept. `sphere` receives unit vectors only when one is certified.
+template <class EigenSolver>
+Sphere_initial_outcome certified_sphere_initial_map(const Sphere_problem& P, std::vector<Vec3>& sphere,
+                                                    std::size_t well_shaped = 3, bool extremal = true)
+{
+  Sphere_initial_outcome out;
+  const Area_barrier_energy energy(P.target);
+  std::vector<int> candidates = puncture_candidates(P, well_shaped);
+  if(extremal)
+    for(int f : extremal_faces(P))
+      if(std::find(candidates.begin(), candidates.end(), f) == candidates.end()) candidates.push_back(f);
+  std::ostringstream why;
+  std::vector<Vec2> uv;
+  std::vector<Vec3> p;
+  std::vector<double> u;
+  double best_E = std::numeric_limits<double>::infinity();
+  for(int f : candidates) {
+    ++out.attempts;
+    if(!punctured_tutte<EigenSolver>(P, f, uv)) { why << " puncture " << f << ": the Tutte solve failed;"; continue; }
+    // Orientation of the lift, decided once on the unit scale by the majority.
+    lift_to_sphere(uv, 2, Vec2{{ 0, 0 }}, false, p);
+    signed_areas_sphere(p, P.faces, u);
+    std::size_t negative = 0;
+    for(double a : u) if(a < 0) ++negative;
+    const bool mirror = 2 * negative > u.size();
+    const std::pair<double, double> best = best_lift_scale(P, energy, uv, Vec2{{ 0, 0 }}, mirror);
+    if(!std::isfinite(best.second)) { why << " puncture " << f << ": no scale keeps every face positive in floating point;"; continue; }
+    if(!(best.second < best_E)) continue;
+    lift_to_sphere(uv, std::exp(best.first), Vec2{{ 0, 0 }}, mirror, p);
+    const Orientation_count oc = count_orientations_sphere(p, P.faces);
+    if(!oc.all_positive()) {
+      why << " puncture " << f << ": " << oc.inverted << " inverted and " << oc.degenerate
+          << " degenerate faces by the exact predicate (first: face " << oc.first_bad << ");";
+      continue;
+    }
+    best_E = best.second;
+    sphere.swap(p);
+    out.certified = true;
+    out.puncture = f;
+    out.scale = std::exp(best.first);
+  }
+  if(out.certified) out.d_area = flat_d_area(sphere, P.faces, P.target);
+  else out.message = "no initial spherical map could be certified after " + std::to_string(out.attempts) + " punctures:" + why.str();
+  return out;
+}
+
+} // namespace dlf
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
