@@ -619,6 +619,7 @@ TEST(Errors, InitialMapFolded_RunFlow)
   }
 }
 
+// A mirrored initial map is mirrored back: the result is positively oriented.
 TEST(Run_flow, MirroredInitialMapIsAccepted)
 {
   D::Disk_problem P;
@@ -630,9 +631,9 @@ TEST(Run_flow, MirroredInitialMapIsAccepted)
   SM_dlf p;
   ASSERT_EQ(p.run_flow(P, uv), SMP::OK) << p.report().message;
   const Signs s = exact_signs(uv, std::vector<Tri>(caller.begin(), caller.end()));
-  EXPECT_EQ(s.pos, 0u);
+  EXPECT_EQ(s.pos, caller.size());
   EXPECT_EQ(s.zero, 0u);
-  EXPECT_EQ(s.neg, caller.size());
+  EXPECT_EQ(s.neg, 0u);
   EXPECT_EQ(p.report().caller_inverted_faces, 0u);
   EXPECT_LE(p.report().final_d_area, p.report().initial_d_area);
 }

@@ -211,10 +211,10 @@ public:
       return Error_code(code);
     };
     // Orientation: the caller's faces must all be positive, or all negative
-    // (then we mirror the index order, not the map).
+    // (a mirrored initial map, which is mirrored back: the result is positive).
     D::Orientation_count oc = D::count_orientations_2(uv, P.faces);
     if(oc.inverted * 2 > P.faces.size()) {
-      for(D::Face& f : P.faces) std::swap(f[1], f[2]);
+      for(D::Vec2& p : uv) p[1] = -p[1];
       oc = D::count_orientations_2(uv, P.faces);
     }
     if(!oc.all_positive()) {
