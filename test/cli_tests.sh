@@ -129,6 +129,56 @@ for init in tutte mvc dcp lscm arap; do
 done
 check "no temporaries left" no_temporaries
 
+# --- measure control: densities and regions of interest ----------------------
+read -r NV NF _ < <(awk '!/^#/ && NF' "$NEF" | sed -n 2p)
+# json_region_values FILE KEY: the values of KEY in the "regions" array, one a line.
+json_region_values() { awk -v key="$2" '/^  "regions": \[/ { inside = 1; next } inside && /^  \]/ { inside = 0 }
+  inside && $0 ~ "^      \"" key "\": " { sub(/^ *"[^"]*": */, ""); sub(/,$/, ""); gsub(/"/, ""); print }' "$1"; }
+within_one_percent() { awk -v e="$1" 'BEGIN { exit !(e != "" && e <= 0.01 && e >= -0.01) }' || { echo "  relative error $1"; return 1; }; }
+# a ball around vertex 100 of nefertiti (negative coordinates must parse)
+"$DLF" disk "$NEF" --roi-ball -0.215988 -0.081660 0.215680 1 --factor 4 --band 0.3 -o roi.obj --report roi.json \
+  --svg roi.svg > roi.out 2> roi.err
+check "--roi-ball exits 0" equals "$?" 0
+check "--roi-ball: nothing on stderr" test ! -s roi.err
+check "--roi-ball: status ok" equals "$(json_get roi.json "" status)" ok
+check "--roi-ball: density from regions" equals "$(json_get roi.json density source)" regions
+check "--roi-ball: the density tolerance is used" equals "$(json_get roi.json options tolerance)" 0.0005
+check "--roi-ball: 0 inverted faces" equals "$(json_get roi.json final inverted_faces)" 0
+check "--roi-ball: one region, factor 4" equals "$(json_region_values roi.json factor)" 4.0
+check "--roi-ball: share within 1%" within_one_percent "$(json_region_values roi.json relative_error)"
+check "--roi-ball: region reached" equals "$(json_region_values roi.json reached)" true
+check "--roi-ball: summary shows the region" grep -q "region roi-ball -0.215988 -0.08166 0.21568 1: factor 4" roi.out
+check "--roi-ball: SVG outlines the region" grep -q "region of interest" roi.svg
+check "--tolerance given wins over the density tolerance" bash -c \
+  "'$DLF' disk '$NEF' --roi-ball 0 0 0 1 --factor 2 --tolerance 0.01 --report tol.json -q && grep -q '\"tolerance\": 0.01' tol.json"
+# two regions from CGAL selection files: a face line, and a vertex line only
+{ echo; seq -s ' ' 0 99; echo; } > faces.selection.txt
+{ seq -s ' ' 200 298; echo; echo; } > vertices.selection.txt
+VSEL_FACES=$(awk '!/^#/ && NF' "$NEF" | awk -v nv="$NV" 'NR > 2 + nv && $2 >= 200 && $3 >= 200 && $4 >= 200' | wc -l)
+"$DLF" disk "$NEF" --roi faces.selection.txt --factor 0.5 --roi vertices.selection.txt --factor 2 --report sel.json -q
+check "--roi selection files exit 0" equals "$?" 0
+check "--roi: face line gives 100 faces, vertex line the faces of its vertices" equals \
+  "$(json_region_values sel.json faces | tr '\n' ' ')" "100 $VSEL_FACES "
+check "--roi: the k-th --factor belongs to the k-th region" equals "$(json_region_values sel.json factor | tr '\n' ' ')" "0.5 2.0 "
+# a density file per face and per vertex
+awk -v nf="$NF" 'BEGIN { print "# density per face"; for(f = 0; f < nf; ++f) print (f < nf / 2 ? 1 : 3) }' > face.rho
+awk -v nv="$NV" 'BEGIN { for(v = 0; v < nv; ++v) printf "%s%s", (v % 3 ? 1 : 2), (v % 10 == 9 ? "\n" : " ") }' > vertex.rho
+"$DLF" disk "$NEF" --density face.rho --report face_rho.json -q
+check "--density per face exits 0" equals "$?" 0
+check "--density per face: source face" equals "$(json_get face_rho.json density source)" face
+check "--density per face: density-weighted d_area reaches the tolerance" awk -v d="$(json_get face_rho.json final d_area)" \
+  'BEGIN { exit !(d >= 2 && d <= 2.0006) }'
+"$DLF" disk "$NEF" --density vertex.rho --report vertex_rho.json -q
+check "--density per vertex: source vertex" equals "$(json_get vertex_rho.json density source)" vertex
+check "--density per vertex: 0 inverted faces" equals "$(json_get vertex_rho.json final inverted_faces)" 0
+# error values for the density files
+head -n 10 face.rho > short.rho
+{ sed -n '1,5p' face.rho; echo 0; sed -n '7,$p' face.rho; } > zero.rho
+{ sed -n '1,5p' face.rho; echo -2; sed -n '7,$p' face.rho; } > negative.rho
+{ sed -n '1,5p' face.rho; echo nan; sed -n '7,$p' face.rho; } > nan.rho
+{ sed -n '1,5p' face.rho; echo 1,5; sed -n '7,$p' face.rho; } > garbage.rho
+check "no temporaries left" no_temporaries
+
 # --- error paths: non-zero exit, one line on stderr, no output file -----------
 echo "this is not a mesh" > garbage.off
 head -c 2000 /dev/zero | tr '\0' 'x' > garbage.obj
@@ -165,6 +215,24 @@ expect_error "missing INPUT" 1 "missing INPUT" disk
 expect_error "unknown command" 1 "unknown command" frobnicate input.off
 expect_error "sphere: torus refused" 1 "genus" sphere "$MESHES/pipe.off"
 expect_error "sphere: open mesh refused" 1 "ERROR_NOT_GENUS_0" sphere "$NEF"
+
+expect_error "--density: wrong count" 1 "9 values; expected $NF (one per face) or $NV (one per vertex)" disk input.off --density short.rho
+expect_error "--density: zero" 1 "line 6: the density of face 4 is 0" disk input.off --density zero.rho
+expect_error "--density: negative" 1 "the density of face 4 is -2" disk input.off --density negative.rho
+expect_error "--density: NaN" 1 "the density of face 4 is nan" disk input.off --density nan.rho
+expect_error "--density: not a number" 1 "line 6: '1,5' is not a number" disk input.off --density garbage.rho
+expect_error "--density: missing file" 1 "cannot open" disk input.off --density no_such.rho
+expect_error "--roi without --factor" 1 "one --factor per region" disk input.off --roi faces.selection.txt
+expect_error "--factor without region" 1 "one --factor per region" disk input.off --factor 2
+expect_error "--factor 0" 1 "--factor must be a positive number" disk input.off --roi-ball 0 0 0 1 --factor 0
+expect_error "--roi-ball with three numbers" 1 "four numbers" disk input.off --roi-ball 0 0 1
+expect_error "--roi-ball: empty ball" 1 "no face has its centroid" disk input.off --roi-ball 100 100 100 1 --factor 2
+expect_error "--density with --roi" 1 "exclude each other" disk input.off --density face.rho --roi faces.selection.txt --factor 2
+expect_error "--band without region" 1 "--band applies" disk input.off --band 1
+echo "$NF" > bad.selection.txt; echo "$NF" >> bad.selection.txt
+expect_error "--roi: face out of range" 1 "face $NF does not exist" disk input.off --roi bad.selection.txt --factor 2
+printf '\n\n0 1\n' > edges.selection.txt
+expect_error "--roi: edges only" 1 "selects no face" disk input.off --roi edges.selection.txt --factor 2
 
 "$DLF" disk input.off -o no_such_dir/o.obj > /dev/null 2> err.txt
 check "output into a missing directory fails before the flow" bash -c "[ $? = 1 ] && grep -q 'does not exist' err.txt"

@@ -619,7 +619,8 @@ TEST(Errors, InitialMapFolded_RunFlow)
   }
 }
 
-// A mirrored initial map is mirrored back: the result is positively oriented.
+// A mirrored initial map (all faces negative) is accepted and stays mirrored:
+// every face keeps the initial map's orientation.
 TEST(Run_flow, MirroredInitialMapIsAccepted)
 {
   D::Disk_problem P;
@@ -631,9 +632,9 @@ TEST(Run_flow, MirroredInitialMapIsAccepted)
   SM_dlf p;
   ASSERT_EQ(p.run_flow(P, uv), SMP::OK) << p.report().message;
   const Signs s = exact_signs(uv, std::vector<Tri>(caller.begin(), caller.end()));
-  EXPECT_EQ(s.pos, caller.size());
+  EXPECT_EQ(s.pos, 0u);
   EXPECT_EQ(s.zero, 0u);
-  EXPECT_EQ(s.neg, 0u);
+  EXPECT_EQ(s.neg, caller.size());
   EXPECT_EQ(p.report().caller_inverted_faces, 0u);
   EXPECT_LE(p.report().final_d_area, p.report().initial_d_area);
 }

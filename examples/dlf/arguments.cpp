@@ -7,6 +7,7 @@
 #include <boost/program_options.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
 
@@ -30,9 +31,11 @@ void require_one_of(const std::string& option, const std::string& value, const s
   throw Cli_error("invalid value '" + value + "' for --" + option + " (expected " + list + ")");
 }
 
-// Parses, turning Boost's exceptions into one-line usage errors.
+// Parses, turning Boost's exceptions into one-line usage errors. `ordered`,
+// if given, receives the options in command-line order.
 po::variables_map parse(const std::string& command, const std::vector<std::string>& args,
-                        const po::options_description& visible, const std::string& positional_name)
+                        const po::options_description& visible, const std::string& positional_name,
+                        std::vector<po::option>* ordered = nullptr)
 {
   po::options_description all;
   all.add(visible);
@@ -41,12 +44,88 @@ po::variables_map parse(const std::string& command, const std::vector<std::strin
   positional.add(positional_name.c_str(), -1);
   po::variables_map vm;
   try {
-    po::store(po::command_line_parser(args).options(all).positional(positional).style(parser_style).run(), vm);
+    const po::parsed_options parsed = po::command_line_parser(args).options(all).positional(positional).style(parser_style).run();
+    po::store(parsed, vm);
     po::notify(vm);
+    if(ordered) *ordered = parsed.options;
   } catch(const po::error& e) {
     throw Cli_error(std::string(e.what()) + " (see 'dlf " + command + " --help')");
   }
   return vm;
+}
+
+bool parse_number(const std::string& token, double& x)
+{
+  char* end = nullptr;
+  x = std::strtod(token.c_str(), &end);
+  return !token.empty() && end == token.c_str() + token.size();
+}
+
+// `--roi-ball X Y Z R` takes four values, some of which may look like options
+// (-0.5): glue them to the option before Boost sees them.
+std::vector<std::string> glue_roi_ball(const std::vector<std::string>& args)
+{
+  std::vector<std::string> out;
+  for(std::size_t k = 0; k < args.size(); ++k) {
+    if(args[k] != "--roi-ball") { out.push_back(args[k]); continue; }
+    std::string values;
+    for(std::size_t j = 1; j <= 4; ++j) {
+      double x;
+      if(k + j >= args.size() || !parse_number(args[k + j], x))
+        throw Cli_error("--roi-ball expects four numbers X Y Z R" +
+                        (k + j < args.size() ? ", got '" + args[k + j] + "'" : std::string(", got ") + std::to_string(j - 1)));
+      values += (j == 1 ? "" : " ") + args[k + j];
+    }
+    out.push_back("--roi-ball=" + values);
+    k += 4;
+  }
+  return out;
+}
+
+Region_option ball_region(const std::string& value)
+{
+  std::istringstream in(value);
+  std::string token;
+  Region_option r;
+  int n = 0;
+  while(in >> token) {
+    double x;
+    if(n == 4 || !parse_number(token, x)) throw Cli_error("--roi-ball expects four numbers X Y Z R, got '" + value + "'");
+    r.ball[std::size_t(n++)] = x;
+  }
+  if(n != 4) throw Cli_error("--roi-ball expects four numbers X Y Z R, got '" + value + "'");
+  if(!(r.ball[3] > 0) || !std::isfinite(r.ball[3]) || !std::isfinite(r.ball[0] + r.ball[1] + r.ball[2]))
+    throw Cli_error("--roi-ball: the centre must be finite and the radius a positive number, got '" + value + "'");
+  return r;
+}
+
+// The regions and their factors, in command-line order: the k-th --factor
+// belongs to the k-th region.
+std::vector<Region_option> regions_of(const std::vector<po::option>& ordered)
+{
+  std::vector<Region_option> regions;
+  std::vector<double> factors;
+  for(const po::option& o : ordered) {
+    if(o.value.empty()) continue;
+    if(o.string_key == "roi") {
+      Region_option r;
+      r.selection_file = o.value[0];
+      regions.push_back(r);
+    } else if(o.string_key == "roi-ball") {
+      regions.push_back(ball_region(o.value[0]));
+    } else if(o.string_key == "factor") {
+      double f;
+      if(!parse_number(o.value[0], f) || !(f > 0) || !std::isfinite(f))
+        throw Cli_error("--factor must be a positive number, got '" + o.value[0] + "'");
+      factors.push_back(f);
+    }
+  }
+  if(regions.size() != factors.size())
+    throw Cli_error(std::to_string(regions.size()) + " region" + (regions.size() == 1 ? "" : "s") + " (--roi, --roi-ball) but " +
+                    std::to_string(factors.size()) + " --factor: give one --factor per region (the k-th --factor "
+                    "belongs to the k-th region)");
+  for(std::size_t k = 0; k < regions.size(); ++k) regions[k].factor = factors[k];
+  return regions;
 }
 
 std::vector<std::string> positionals(const po::variables_map& vm, const std::string& name)
@@ -71,6 +150,10 @@ const char* disk_examples =
   "      free border: the border keeps the shape of the LSCM map\n"
   "  dlf disk face.off --mode paper --history --report paper.json --domain-mesh flipped.obj\n"
   "      the paper's algorithm (edge flips), its per-iteration history and flipped triangulation\n"
+  "  dlf disk face.off -o face_uv.obj --roi-ball 0.1 -0.2 0.5 0.3 --factor 4 --band 0.1 --svg roi.svg\n"
+  "      measure control: the faces in the ball get 4 times their share of the domain area\n"
+  "  dlf disk face.off -o face_uv.obj --density rho.txt --report rho.json\n"
+  "      a density per face or per vertex (plain-text numbers), density-weighted metrics\n"
   "  dlf score face.off face_uv.obj\n"
   "      the distortion of a map written by 'dlf disk' (or any per-vertex uv OBJ)\n"
   "\n"
@@ -87,10 +170,18 @@ void print_main_help(std::ostream& out)
          "Usage:\n"
          "  dlf disk INPUT [options]        map a disk-topology triangle mesh onto the plane\n"
          "  dlf score MESH PARAM.obj        measure the distortion of an existing map\n"
-         "  dlf sphere INPUT [options]      map a closed genus-0 mesh onto the sphere (not available yet)\n"
+         "  dlf sphere INPUT [options]      map a closed genus-0 mesh onto the unit sphere\n"
          "\n"
          "'dlf COMMAND --help' lists the options of a command.\n\n"
       << disk_examples;
+}
+
+std::string Region_option::name() const
+{
+  if(!selection_file.empty()) return "roi " + selection_file;
+  std::ostringstream s;
+  s << "roi-ball " << ball[0] << ' ' << ball[1] << ' ' << ball[2] << ' ' << ball[3];
+  return s.str();
 }
 
 bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s)
@@ -98,6 +189,9 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
   const SMP::Discrete_lie_flow_options defaults;
   double tolerance = defaults.tolerance, mu = defaults.mu;
   long long max_iterations = (long long)(defaults.max_iterations);
+
+  std::ostringstream tolerance_help;
+  tolerance_help << "stop when d_area - 2 <= X (" << density_tolerance << " when a density or region is given)";
 
   po::options_description o("Options");
   o.add_options()
@@ -118,22 +212,38 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
     ("svg", po::value<std::string>(&s.svg)->value_name("LAYOUT.svg"),
      "draw the uv layout, triangles coloured by area ratio")
     ("tolerance", po::value<double>(&tolerance)->value_name("X")->default_value(tolerance),
-     "stop when d_area - 2 <= X")
+     tolerance_help.str().c_str())
     ("max-iterations", po::value<long long>(&max_iterations)->value_name("N")->default_value(max_iterations),
      "iteration cap")
     ("mu", po::value<double>(&mu)->value_name("X"),
      "fraction in (0, 1) of the smallest critical step that a step may take (default: the mode's own)")
     ("literal-targets", "paper mode: lump the target areas once on the input triangles (Algorithm 1 read literally)")
     ("no-flips", "paper mode: no Delaunay edge flips")
+    ("density", po::value<std::string>(&s.density_file)->value_name("FILE"),
+     "measure control: a density > 0 per face, or per vertex (a face takes the mean of its corners), "
+     "as plain text (numbers separated by white space, '#' comments); the domain area of a face "
+     "becomes proportional to density times area")
+    ("roi", po::value<std::vector<std::string> >()->composing()->value_name("FILE"),
+     "a region of interest: a CGAL selection file (*.selection.txt: line 1 vertex indices, line 2 face "
+     "indices; without faces, the faces whose 3 vertices are selected); needs --factor")
+    ("roi-ball", po::value<std::vector<std::string> >()->composing()->value_name("X Y Z R"),
+     "a region of interest: the faces whose centroid lies in this ball; needs --factor")
+    ("factor", po::value<std::vector<double> >()->composing()->value_name("F"),
+     "density of a region (> 0: 4 gives it 4 times its share of the domain area); the k-th --factor "
+     "belongs to the k-th --roi or --roi-ball, and overlapping regions multiply")
+    ("band", po::value<double>(&s.band)->value_name("W"),
+     "width (3D length, along edges) of a transition from each region's factor to 1 around it")
     ("history", "add the per-iteration history to the report")
     ("quiet,q", "print nothing on success")
     ("verbose,v", "print one line per iteration");
 
-  const po::variables_map vm = parse("disk", args, o, "input");
+  std::vector<po::option> ordered;
+  const po::variables_map vm = parse("disk", glue_roi_ball(args), o, "input", &ordered);
   if(vm.count("help")) {
     std::cout << "Usage: dlf disk INPUT [options]\n\n"
                  "Area-preserving parameterization of a disk-topology triangle mesh (any format CGAL\n"
-                 "reads: OFF, OBJ, PLY, STL) by the Discrete Lie Flow.\n\n"
+                 "reads: OFF, OBJ, PLY, STL) by the Discrete Lie Flow; with --density, --roi or\n"
+                 "--roi-ball, measure-controlled: each face gets density times its share of the area.\n\n"
               << o << "\n" << disk_examples;
     return false;
   }
@@ -153,6 +263,11 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
   if(!(tolerance >= 0) || !std::isfinite(tolerance)) throw Cli_error("--tolerance must be a number >= 0");
   if(vm.count("mu") && !(mu > 0 && mu < 1)) throw Cli_error("--mu must be in (0, 1)");
   if(max_iterations < 0) throw Cli_error("--max-iterations must be >= 0");
+  s.regions = regions_of(ordered);
+  if(!s.density_file.empty() && !s.regions.empty()) throw Cli_error("--density and --roi/--roi-ball exclude each other");
+  if(vm.count("band") && s.regions.empty()) throw Cli_error("--band applies to --roi and --roi-ball only");
+  if(!(s.band >= 0) || !std::isfinite(s.band)) throw Cli_error("--band must be a number >= 0");
+  if(s.has_density() && vm["tolerance"].defaulted()) tolerance = density_tolerance;
   if(s.mode != "paper") {
     if(vm.count("literal-targets")) throw Cli_error("--literal-targets applies to --mode paper only");
     if(vm.count("no-flips")) throw Cli_error("--no-flips applies to --mode paper only");

@@ -9,6 +9,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 
+#include <array>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -17,6 +18,20 @@ namespace dlf_cli {
 
 enum class Verbosity { QUIET, NORMAL, VERBOSE };
 
+/// A region of interest of `--roi FILE` or `--roi-ball X Y Z R`, with its `--factor`.
+struct Region_option
+{
+  std::string selection_file;       ///< `--roi`: a CGAL selection file; empty for a ball
+  std::array<double, 4> ball{};     ///< `--roi-ball`: centre x, y, z and radius
+  double factor = 1;
+  std::string name() const;         ///< as the command line gave it, for messages and the report
+};
+
+/// D_area − 2 at which a run with a density stops unless `--tolerance` is
+/// given (measured: with the plain run's 1e-2 a region's share misses its
+/// prescribed share by up to 13%; see doc/measure_control.md).
+const double density_tolerance = 5e-4;
+
 struct Disk_settings
 {
   std::string input;
@@ -24,8 +39,12 @@ struct Disk_settings
   std::string mode = "certified";               ///< certified | paper
   std::string init = "tutte";                   ///< tutte | mvc | dcp | lscm | arap
   std::string border;                           ///< circle | square | free (resolved from init if not given)
+  std::string density_file;                     ///< `--density`: one value per face or per vertex
+  std::vector<Region_option> regions;           ///< `--roi` / `--roi-ball`, in command-line order
+  double band = 0;                              ///< `--band`: width of the transition to density 1
   CGAL::Surface_mesh_parameterization::Discrete_lie_flow_options options;
   Verbosity verbosity = Verbosity::NORMAL;
+  bool has_density() const { return !density_file.empty() || !regions.empty(); }
 };
 
 struct Score_settings

@@ -6,6 +6,7 @@
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
+#include "density_input.h"
 #include "disk_run.h"
 #include "metrics.h"
 #include "obj_io.h"
@@ -14,6 +15,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iomanip>
 #include <iostream>
@@ -60,8 +63,49 @@ json history_json(const std::vector<SMP::Discrete_lie_flow_iteration>& history)
   return h;
 }
 
+// What may get a region closer to its share, by why the flow stopped.
+const char* share_hint(SMP::Discrete_lie_flow_stop_reason r)
+{
+  switch(r) {
+  case SMP::Discrete_lie_flow_stop_reason::CONVERGED: return "a smaller --tolerance may help";
+  case SMP::Discrete_lie_flow_stop_reason::ITERATION_CAP: return "a larger --max-iterations may help";
+  default: return "a wider --band or a factor closer to 1 may help";
+  }
+}
+
+json density_json(const Disk_settings& s, const Density_setup& d)
+{
+  if(d.source == "none") return json(nullptr);
+  json j;
+  j["source"] = d.source;
+  if(!s.density_file.empty()) j["file"] = s.density_file;
+  if(!d.regions.empty()) j["band"] = s.band;
+  j["min"] = *std::min_element(d.face_density.begin(), d.face_density.end());
+  j["max"] = *std::max_element(d.face_density.begin(), d.face_density.end());
+  return j;
+}
+
+// Per region: shares of the domain area, prescribed (ρ·area) and achieved
+// (null when the flow failed).
+json regions_json(const Density_setup& d, bool measured)
+{
+  json regions = json::array();
+  for(const Density_region& r : d.regions) {
+    json j;
+    j["name"] = r.name;
+    j["factor"] = r.factor;
+    j["faces"] = r.faces.size();
+    j["prescribed_fraction"] = r.prescribed;
+    j["achieved_fraction"] = measured ? json(r.achieved) : json(nullptr);
+    j["relative_error"] = measured ? json(r.relative_error()) : json(nullptr);
+    j["reached"] = measured ? json(std::abs(r.relative_error()) <= region_share_tolerance) : json(nullptr);
+    regions.push_back(j);
+  }
+  return regions;
+}
+
 json make_report(const Disk_settings& s, const Indexed_mesh& mesh, const Disk_run& run, const Metrics* initial,
-                 const Metrics* final_metrics)
+                 const Metrics* final_metrics, const Density_setup& density)
 {
   const SMP::Discrete_lie_flow_report& R = run.report;
   json j;
@@ -86,14 +130,19 @@ json make_report(const Disk_settings& s, const Indexed_mesh& mesh, const Disk_ru
   j["final_residual"] = R.final_residual;
   j["rejected_by_exact_check"] = R.rejected_by_exact_check;
   j["options"] = { { "tolerance", s.options.tolerance }, { "max_iterations", s.options.max_iterations },
-                   { "mu", s.options.mu > 0 ? json(s.options.mu) : json(nullptr) }, // null: the mode's default { "literal_targets", !s.options.lump_targets_on_flowing_faces },
+                   { "mu", s.options.mu > 0 ? json(s.options.mu) : json(nullptr) }, // null: the mode's default
+                   { "literal_targets", !s.options.lump_targets_on_flowing_faces },
                    { "delaunay_flips", s.options.delaunay_flips } };
+  // Metrics above are density-weighted (DESIGN.md) when a density is given.
+  j["density"] = density_json(s, density);
+  if(!density.regions.empty()) j["regions"] = regions_json(density, final_metrics != nullptr);
   if(s.options.record_history) j["history"] = history_json(R.history);
   return j;
 }
 
 void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh& mesh, const Disk_run& run,
-                   const Metrics* initial, const Metrics* final_metrics, const std::vector<std::string>& written)
+                   const Metrics* initial, const Metrics* final_metrics, const Density_setup& density,
+                   const std::vector<std::string>& written)
 {
   const SMP::Discrete_lie_flow_report& R = run.report;
   out << std::setprecision(8);
@@ -104,11 +153,21 @@ void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh
   if(initial) {
     out << "  d_area " << initial->d_area;
     if(final_metrics) out << " -> " << final_metrics->d_area;
-    out << " (optimum 2)\n  inverted faces " << initial->inverted_faces;
+    out << " (optimum 2" << (density.source == "none" ? "" : ", density-weighted") << ")\n  inverted faces "
+        << initial->inverted_faces;
     if(final_metrics) out << " -> " << final_metrics->inverted_faces;
     out << "\n";
   }
   if(s.mode == "paper") out << "  edge flips " << R.flips << "\n";
+  if(!s.density_file.empty()) out << "  density per " << density.source << " from " << s.density_file << "\n";
+  for(const Density_region& r : density.regions) {
+    out << "  region " << r.name << ": factor " << r.factor << ", " << r.faces.size() << " faces, share of the domain "
+        << std::setprecision(5) << r.prescribed << " prescribed";
+    if(final_metrics)
+      out << ", " << r.achieved << " achieved (" << std::showpos << std::setprecision(2) << 100 * r.relative_error()
+          << std::noshowpos << "%)";
+    out << "\n";
+  }
   out << std::setprecision(3) << "  seconds: initial map " << R.seconds_initial << ", flow " << R.seconds_flow
       << ", total " << run.seconds << "\n";
   for(const std::string& w : written) out << "  wrote " << w << "\n";
@@ -129,14 +188,19 @@ int disk_command(const std::vector<std::string>& args)
 
   const Indexed_mesh mesh = read_triangle_mesh(s.input);
   check_disk_topology(mesh, s.input);
+  Density_setup density = make_density(mesh, s);
+  s.options.face_density = density.face_density; // faces in input order, as Surface_mesh keeps them
 
   if(s.verbosity == Verbosity::VERBOSE) s.options.callback = &print_iteration;
   const Disk_run run = run_disk(mesh, s);
   const bool ok = run.status == SMP::OK;
 
   Metrics initial, final_metrics;
-  if(!run.initial_uv.empty()) initial = compute_metrics(mesh, run.initial_uv);
-  if(ok) final_metrics = compute_metrics(mesh, run.final_uv);
+  if(!run.initial_uv.empty()) initial = compute_metrics(mesh, run.initial_uv, density.face_density);
+  if(ok) {
+    final_metrics = compute_metrics(mesh, run.final_uv, density.face_density);
+    measure_regions(mesh, run.final_uv, density);
+  }
   const Metrics* initial_ptr = run.initial_uv.empty() ? nullptr : &initial;
   const Metrics* final_ptr = ok ? &final_metrics : nullptr;
 
@@ -156,16 +220,31 @@ int disk_command(const std::vector<std::string>& args)
         write_uv_obj(o, mesh.xyz, run.final_uv, domain, comment.str() + " (domain triangulation)");
       });
     }
-    if(!s.svg.empty())
-      outputs.write(s.svg, [&](std::ostream& o) { write_svg_layout(o, mesh, run.final_uv, comment.str()); });
+    if(!s.svg.empty()) {
+      std::vector<int> roi;
+      for(const Density_region& r : density.regions) roi.insert(roi.end(), r.faces.begin(), r.faces.end());
+      std::sort(roi.begin(), roi.end());
+      roi.erase(std::unique(roi.begin(), roi.end()), roi.end());
+      outputs.write(s.svg, [&](std::ostream& o) {
+        write_svg_layout(o, mesh, run.final_uv, comment.str(), density.face_density, region_outline(mesh, roi));
+      });
+    }
   }
   if(!s.report.empty()) {
-    const json report = make_report(s, mesh, run, initial_ptr, final_ptr);
+    const json report = make_report(s, mesh, run, initial_ptr, final_ptr, density);
     outputs.write(s.report, [&](std::ostream& o) { o << report.dump(2) << '\n'; });
   }
   outputs.commit();
 
-  if(s.verbosity != Verbosity::QUIET) print_summary(std::cout, s, mesh, run, initial_ptr, final_ptr, outputs.committed());
+  if(s.verbosity != Verbosity::QUIET)
+    print_summary(std::cout, s, mesh, run, initial_ptr, final_ptr, density, outputs.committed());
+  // A region that missed its share is not an error (the map is valid), but never silent.
+  for(const Density_region& r : density.regions)
+    if(ok && !(std::abs(r.relative_error()) <= region_share_tolerance))
+      std::cerr << "dlf: warning: region " << r.name << " got " << r.achieved << " of the domain area, prescribed "
+                << r.prescribed << " (" << std::showpos << std::setprecision(3) << 100 * r.relative_error() << std::noshowpos
+                << "%): the flow stopped (" << SMP::stop_reason_name(run.report.stop_reason) << ") after "
+                << run.report.iterations << " iterations; " << share_hint(run.report.stop_reason) << "\n";
   if(!ok)
     throw Cli_error(s.input + ": " + SMP::discrete_lie_flow_error_name(run.status) + ": " + run.report.message,
                     is_input_error(run.status) ? EXIT_BAD_INPUT : EXIT_FLOW_ERROR);

@@ -9,9 +9,8 @@
 #define DLF_CLI_DISK_RUN_IMPL_H
 
 #include "disk_run.h"
+#include "surface_mesh.h"
 
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 
 #include <Eigen/SparseLU>
@@ -20,11 +19,6 @@
 #include <memory>
 
 namespace dlf_cli {
-
-typedef CGAL::Simple_cartesian<double> Kernel;
-typedef CGAL::Surface_mesh<Kernel::Point_3> Surface_mesh;
-typedef boost::graph_traits<Surface_mesh>::halfedge_descriptor halfedge_descriptor;
-typedef boost::graph_traits<Surface_mesh>::vertex_descriptor vertex_descriptor;
 
 /// The direct solver CGAL's fixed-border parameterizers use (and the
 /// library's default initial map), so that Tutte on a circle is the very
@@ -65,17 +59,6 @@ private:
   Init m_init;
   std::shared_ptr<std::vector<Vec2> > m_out;
 };
-
-/// Builds the Surface_mesh in input order: vertex i of the file is
-/// `Surface_mesh::Vertex_index(i)`, so its index is the input index.
-inline void build_surface_mesh(const Indexed_mesh& in, Surface_mesh& sm)
-{
-  sm.reserve(Surface_mesh::size_type(in.xyz.size()), Surface_mesh::size_type(3 * in.faces.size()),
-             Surface_mesh::size_type(in.faces.size()));
-  for(const Vec3& p : in.xyz) sm.add_vertex(Kernel::Point_3(p[0], p[1], p[2]));
-  for(const Triangle& t : in.faces)
-    sm.add_face(Surface_mesh::Vertex_index(t[0]), Surface_mesh::Vertex_index(t[1]), Surface_mesh::Vertex_index(t[2]));
-}
 
 /// Runs the flow with the initial parameterizer `init`, calling the
 /// parameterizer's own parameterize() (as SMP's free function does) with an

@@ -21,8 +21,10 @@ namespace dlf_cli {
 
 typedef CGAL::Surface_mesh_parameterization::internal::dlf::Distortion_metrics Metrics;
 
-/// Distortion of the map `uv` of the caller's triangles `mesh.faces`.
-Metrics compute_metrics(const Indexed_mesh& mesh, const std::vector<Vec2>& uv);
+/// Distortion of the map `uv` of the caller's triangles `mesh.faces`,
+/// against density-weighted areas when `face_density` (per face) is given.
+Metrics compute_metrics(const Indexed_mesh& mesh, const std::vector<Vec2>& uv,
+                        const std::vector<double>& face_density = std::vector<double>());
 
 nlohmann::ordered_json metrics_to_json(const Metrics& m);
 

@@ -57,7 +57,7 @@ std::string xml_escape(const std::string& s)
   return r;
 }
 
-void write_colour_bar(std::ostream& out, double x, double y, double height, bool has_bad_faces)
+void write_colour_bar(std::ostream& out, double x, double y, double height, bool has_bad_faces, bool weighted)
 {
   out << "<defs><linearGradient id=\"ratio\" x1=\"0\" y1=\"0\" x2=\"0\" y2=\"1\">"
       << "<stop offset=\"0\" stop-color=\"" << hex(red) << "\"/>"
@@ -73,7 +73,8 @@ void write_colour_bar(std::ostream& out, double x, double y, double height, bool
         << "<text x=\"" << x + bar_width + 8 << "\" y=\"" << ty + 4 << "\">" << labels[k] << "</text>\n";
   }
   out << "<text x=\"" << x << "\" y=\"" << y - 8 << "\">area ratio</text>\n"
-      << "<text x=\"" << x << "\" y=\"" << y + height + 18 << "\">domain / surface</text>\n";
+      << "<text x=\"" << x << "\" y=\"" << y + height + 18 << "\">" << (weighted ? "domain / (ρ·surface)" : "domain / surface")
+      << "</text>\n";
   if(has_bad_faces)
     out << "<rect x=\"" << x << "\" y=\"" << y + height + 30 << "\" width=\"12\" height=\"12\" fill=\"#000\"/>"
         << "<text x=\"" << x + 18 << "\" y=\"" << y + height + 41 << "\">inverted or flat</text>\n";
@@ -82,7 +83,8 @@ void write_colour_bar(std::ostream& out, double x, double y, double height, bool
 } // namespace
 
 void write_svg_layout(std::ostream& out, const Indexed_mesh& mesh, const std::vector<Vec2>& uv,
-                      const std::string& caption)
+                      const std::string& caption, const std::vector<double>& face_density,
+                      const std::vector<std::array<int, 2> >& outline)
 {
   const std::size_t F = mesh.faces.size();
   // Per face: surface area, domain area, exact orientation; the majority
@@ -93,7 +95,8 @@ void write_svg_layout(std::ostream& out, const Indexed_mesh& mesh, const std::ve
   long balance = 0;
   for(std::size_t f = 0; f < F; ++f) {
     const Triangle& t = mesh.faces[f];
-    a3[f] = D::triangle_area_3(mesh.xyz[t[0]], mesh.xyz[t[1]], mesh.xyz[t[2]]);
+    a3[f] = D::triangle_area_3(mesh.xyz[t[0]], mesh.xyz[t[1]], mesh.xyz[t[2]]) *
+            (face_density.empty() ? 1. : face_density[f]);
     a2[f] = std::abs(D::signed_area_2(uv[t[0]], uv[t[1]], uv[t[2]]));
     sign[f] = int(D::exact_orientation_2(uv[t[0]], uv[t[1]], uv[t[2]]));
     sum3 += a3[f];
@@ -111,7 +114,7 @@ void write_svg_layout(std::ostream& out, const Indexed_mesh& mesh, const std::ve
   const double extent = std::max(x1 - x0, y1 - y0);
   const double s = extent > 0 ? layout_size / extent : 1.;
   const double width = 2 * margin + (x1 - x0) * s + legend_width;
-  const double height = std::max(2 * margin + (y1 - y0) * s, 2 * margin + 300.) + 24;
+  const double height = std::max(2 * margin + (y1 - y0) * s, 2 * margin + 340.) + 24;
 
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << std::ceil(width) << "\" height=\"" << std::ceil(height)
@@ -144,8 +147,21 @@ void write_svg_layout(std::ostream& out, const Indexed_mesh& mesh, const std::ve
     draw(f, colour, colour, 0.3);
   }
   for(std::size_t f : bad_faces) draw(f, "#000000", "#000000", 1.5);
+  if(!outline.empty()) {
+    out << "<path fill=\"none\" stroke=\"#111\" stroke-width=\"1.5\" stroke-linecap=\"round\" d=\"";
+    for(const std::array<int, 2>& e : outline) {
+      std::snprintf(buffer, sizeof(buffer), "M%.2f,%.2fL%.2f,%.2f", margin + (uv[e[0]][0] - x0) * s,
+                    margin + (y1 - uv[e[0]][1]) * s, margin + (uv[e[1]][0] - x0) * s, margin + (y1 - uv[e[1]][1]) * s);
+      out << buffer;
+    }
+    out << "\"/>\n";
+  }
   out << "</g>\n";
-  write_colour_bar(out, 2 * margin + (x1 - x0) * s + 20, margin + 24 + 20, 240, !bad_faces.empty());
+  write_colour_bar(out, 2 * margin + (x1 - x0) * s + 20, margin + 24 + 20, 240, !bad_faces.empty(), !face_density.empty());
+  if(!outline.empty())
+    out << "<line x1=\"" << 2 * margin + (x1 - x0) * s + 20 << "\" y1=\"" << margin + 24 + 20 + 240 + 56 << "\" x2=\""
+        << 2 * margin + (x1 - x0) * s + 32 << "\" y2=\"" << margin + 24 + 20 + 240 + 56 << "\" stroke=\"#111\" stroke-width=\"1.5\"/>"
+        << "<text x=\"" << 2 * margin + (x1 - x0) * s + 38 << "\" y=\"" << margin + 24 + 20 + 240 + 60 << "\">region of interest</text>\n";
   out << "</svg>\n";
 }
 

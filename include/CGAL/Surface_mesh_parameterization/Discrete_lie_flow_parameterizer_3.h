@@ -9,7 +9,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certified_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/paper_flow.h>
 
-#include <CGAL/Surface_mesh_parameterization/Barycentric_mapping_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Symmetric_barycentric_mapping_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/internal/kernel_traits.h>
@@ -20,7 +20,6 @@
 #include <CGAL/boost/graph/iterator.h>
 
 #include <Eigen/SparseCholesky>
-#include <Eigen/SparseLU>
 #ifdef DLF_USE_CHOLMOD
 #include <Eigen/CholmodSupport>
 #endif
@@ -69,7 +68,7 @@ typedef Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Lower> Default_spd_solver;
 /// \tparam TriangleMesh_ a model of `FaceGraph`
 /// \tparam InitialParameterizer_ a model of `Parameterizer_3` giving a flip-free
 ///   initial map; its border decides the domain (circle, square, or free).
-///   Default: Tutte (`Barycentric_mapping_parameterizer_3`) on the circle by arc length.
+///   Default: Tutte on the circle by arc length (`Symmetric_barycentric_mapping_parameterizer_3`).
 /// \tparam SolverTraits_ `CGAL::Eigen_solver_traits<S>` with `S` an Eigen
 ///   sparse SPD solver offering `analyzePattern()`/`factorize()`. Default:
 ///   CHOLMOD's supernodal LLT when available, else `Eigen::SimplicialLDLT`.
@@ -80,9 +79,7 @@ public:
   typedef TriangleMesh_ Triangle_mesh;
   typedef TriangleMesh_ TriangleMesh;
   typedef typename Default::Get<InitialParameterizer_,
-    Barycentric_mapping_parameterizer_3<TriangleMesh_, Circular_border_arc_length_parameterizer_3<TriangleMesh_>,
-      Eigen_solver_traits<Eigen::SparseLU<Eigen_sparse_matrix<double>::EigenType, Eigen::COLAMDOrdering<int> > > > >::type
-    Initial_parameterizer;
+    Symmetric_barycentric_mapping_parameterizer_3<TriangleMesh_> >::type Initial_parameterizer;
   typedef typename Default::Get<SolverTraits_,
     Eigen_solver_traits<internal::dlf::Default_spd_solver> >::type Solver_traits;
 
@@ -149,8 +146,8 @@ public:
     return out;
   }
 
-  /// Computes the initial map, then flows it. Fills `uvmap` only with a
-  /// positively oriented map (never NaN); on error, `uvmap` keeps whatever the
+  /// Computes the initial map, then flows it. Fills `uvmap` only with a map
+  /// whose triangles all have the orientation of the initial map's (never NaN); on error, `uvmap` keeps whatever the
   /// initial parameterizer wrote, and the report's message names the element.
   ///
   /// \pre `bhd` is a border halfedge of `mesh`; `vimap` indexes the vertices
@@ -211,10 +208,12 @@ public:
       return Error_code(code);
     };
     // Orientation: the caller's faces must all be positive, or all negative
-    // (a mirrored initial map, which is mirrored back: the result is positive).
+    // (some border parameterizers run clockwise); the flow then works on
+    // the faces with their index order reversed, and the map keeps the
+    // orientation of the initial one.
     D::Orientation_count oc = D::count_orientations_2(uv, P.faces);
     if(oc.inverted * 2 > P.faces.size()) {
-      for(D::Vec2& p : uv) p[1] = -p[1];
+      for(D::Face& f : P.faces) std::swap(f[1], f[2]);
       oc = D::count_orientations_2(uv, P.faces);
     }
     if(!oc.all_positive()) {
@@ -370,8 +369,15 @@ private:
         return fail(Error_code(ERROR_DEGENERATE_INPUT), "face " + face_name(mesh, vimap, face_of[f]) + " has zero area");
       double rho = 1;
       if(m_face_density) rho = m_face_density(face_of[f]);
-      else if(m_vertex_density)
-        rho = (m_vertex_density(vertex_of[t[0]]) + m_vertex_density(vertex_of[t[1]]) + m_vertex_density(vertex_of[t[2]])) / 3;
+      else if(m_vertex_density) {
+        rho = 0;
+        for(int k = 0; k < 3; ++k) {
+          const double r = m_vertex_density(vertex_of[std::size_t(t[k])]);
+          if(!(r > 0) || !std::isfinite(r))
+            return fail(Error_code(ERROR_INVALID_DENSITY), "the density of vertex " + std::to_string(t[k]) + " is " + std::to_string(r));
+          rho += r / 3;
+        }
+      }
       else if(!m_options.face_density.empty()) rho = m_options.face_density[position[face_of[f]]];
       if(!(rho > 0) || !std::isfinite(rho))
         return fail(Error_code(ERROR_INVALID_DENSITY), "the density of face " + face_name(mesh, vimap, face_of[f]) + " is " + std::to_string(rho));

@@ -19,6 +19,8 @@
 
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/cotangent_laplacian.h>
 
+#include <algorithm>
+#include <array>
 #include <vector>
 
 namespace CGAL {
@@ -41,28 +43,38 @@ public:
 
   std::size_t analyses() const { return m_solver.analyses(); }
 
-  /// Factorises L_II of the current mesh; keeps L_IB and diag(L_BB).
-  bool factorize(const Sparse_matrix& L)
+  /// Assembles the cotangent stiffness of `faces` over `uv` straight into
+  /// the fixed patterns of L_II and L_IB (and diag(L_BB)). The patterns and
+  /// the slot of every face's contribution are built on the first call:
+  /// later calls only add numbers.
+  void assemble(const std::vector<Vec2>& uv, const std::vector<Face>& faces)
   {
-    const int n = int(L.rows());
-    std::vector<Eigen::Triplet<double> > tii, tib;
-    tii.reserve(std::size_t(L.nonZeros()));
-    m_diag.assign(std::size_t(n), 0.);
-    for(int col = 0; col < L.outerSize(); ++col)
-      for(Sparse_matrix::InnerIterator it(L, col); it; ++it) {
-        const int r = int(it.row());
-        const int ir = m_interior[std::size_t(r)], ic = m_interior[std::size_t(col)];
-        if(ir >= 0 && ic >= 0) tii.emplace_back(ir, ic, it.value());
-        else if(ir >= 0) tib.emplace_back(ir, col, it.value());
-        if(r == col) m_diag[std::size_t(r)] = it.value();
+    if(m_slots.empty()) build_patterns(uv.size(), faces);
+    std::fill(m_LII.valuePtr(), m_LII.valuePtr() + m_LII.nonZeros(), 0.);
+    std::fill(m_LIB.valuePtr(), m_LIB.valuePtr() + m_LIB.nonZeros(), 0.);
+    std::fill(m_diag.begin(), m_diag.end(), 0.);
+    double* vii = m_LII.valuePtr();
+    double* vib = m_LIB.valuePtr();
+    const int* slot = m_slots.data();
+    for(const Face& t : faces) {
+      const std::array<double, 3> w = half_cotangents(uv[t[0]], uv[t[1]], uv[t[2]]);
+      for(int k = 0; k < 3; ++k, slot += 4) {
+        const int i = t[(k + 1) % 3], j = t[(k + 2) % 3];
+        m_diag[std::size_t(i)] += w[k];
+        m_diag[std::size_t(j)] += w[k];
+        // slots: (i,j), (j,i) off-diagonal; (i,i), (j,j) diagonal; ≥ 2^30 marks L_IB
+        for(int e = 0; e < 4; ++e) {
+          const int sl = slot[e];
+          if(sl < 0) continue;
+          const double value = e < 2 ? -w[k] : w[k];
+          if(sl >= ib_mark) vib[sl - ib_mark] += value; else vii[sl] += value;
+        }
       }
-    m_LII.resize(m_ni, m_ni);
-    m_LII.setFromTriplets(tii.begin(), tii.end());
-    m_LII.makeCompressed();
-    m_LIB.resize(m_ni, n);
-    m_LIB.setFromTriplets(tib.begin(), tib.end());
-    return m_ni == 0 || m_solver.factorize(m_LII);
+    }
   }
+
+  /// Factorises the assembled L_II.
+  bool factorize() { return m_ni == 0 || m_solver.factorize(m_LII); }
 
   /// Direction (per vertex, 2D) and its boundary slides, for the gradient
   /// `g` (per vertex, 2D); `tangent[v]` is the unit tangent of a sliding
@@ -99,6 +111,48 @@ public:
   }
 
 private:
+  static const int ib_mark = 1 << 30;
+
+  void build_patterns(std::size_t n, const std::vector<Face>& faces)
+  {
+    std::vector<Eigen::Triplet<double> > tii, tib;
+    for(const Face& t : faces)
+      for(int k = 0; k < 3; ++k) {
+        const int i = t[(k + 1) % 3], j = t[(k + 2) % 3];
+        const int ii = m_interior[std::size_t(i)], ij = m_interior[std::size_t(j)];
+        if(ii >= 0 && ij >= 0) { tii.emplace_back(ii, ij, 1.); tii.emplace_back(ij, ii, 1.); }
+        if(ii >= 0) tii.emplace_back(ii, ii, 1.);
+        if(ij >= 0) tii.emplace_back(ij, ij, 1.);
+        if(ii >= 0 && ij < 0) tib.emplace_back(ii, j, 1.);
+        if(ij >= 0 && ii < 0) tib.emplace_back(ij, i, 1.);
+      }
+    m_LII.resize(m_ni, m_ni);
+    m_LII.setFromTriplets(tii.begin(), tii.end());
+    m_LII.makeCompressed();
+    m_LIB.resize(m_ni, Eigen::Index(n));
+    m_LIB.setFromTriplets(tib.begin(), tib.end());
+    m_LIB.makeCompressed();
+    m_diag.assign(n, 0.);
+    auto find = [](const Sparse_matrix& M, int r, int c) {
+      const int* inner = M.innerIndexPtr();
+      const int* lo = inner + M.outerIndexPtr()[c];
+      const int* hi = inner + M.outerIndexPtr()[c + 1];
+      return int(std::lower_bound(lo, hi, r) - inner);
+    };
+    m_slots.assign(faces.size() * 12, -1);
+    int* slot = m_slots.data();
+    for(const Face& t : faces)
+      for(int k = 0; k < 3; ++k, slot += 4) {
+        const int i = t[(k + 1) % 3], j = t[(k + 2) % 3];
+        const int ii = m_interior[std::size_t(i)], ij = m_interior[std::size_t(j)];
+        if(ii >= 0 && ij >= 0) { slot[0] = find(m_LII, ii, ij); slot[1] = find(m_LII, ij, ii); }
+        else if(ii >= 0) slot[0] = ib_mark + find(m_LIB, ii, j);
+        else if(ij >= 0) slot[1] = ib_mark + find(m_LIB, ij, i);
+        if(ii >= 0) slot[2] = find(m_LII, ii, ii);
+        if(ij >= 0) slot[3] = find(m_LII, ij, ij);
+      }
+  }
+
   bool solve_interior(const Eigen::MatrixXd& b, Eigen::MatrixXd& x)
   {
     x.resize(b.rows(), b.cols());
@@ -115,6 +169,7 @@ private:
   Pattern_reusing_solver<EigenSolver> m_solver;
   Sparse_matrix m_LII, m_LIB;
   std::vector<double> m_diag;
+  std::vector<int> m_slots; // per face, per edge: 4 slots in L_II (or L_IB, offset by ib_mark)
 };
 
 } // namespace dlf

@@ -1,0 +1,317 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Measure control (the paper's §5.5): densities and regions of interest on
+// real disks of CGAL's data set. Shares, orientations and areas are
+// recomputed here from the positions (exact orientation with CGAL's
+// predicate); the library's report is used only for iteration counts and,
+// comparing two runs, D_area.
+//
+// Density runs use `Density_tolerance` (D_area ≤ 2 + 5e-4) instead of the
+// default 1e-2: with 1e-2 a region's share misses the prescribed one by up
+// to 13% (doc/measure_control.md). The plain runs they are compared with use
+// the same tolerance.
+
+#include <gtest/gtest.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_density.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+
+namespace {
+
+typedef CGAL::Simple_cartesian<double> K;
+typedef CGAL::Surface_mesh<K::Point_3> SM;
+typedef boost::graph_traits<SM>::vertex_descriptor SM_vertex;
+typedef boost::graph_traits<SM>::face_descriptor SM_face;
+typedef boost::graph_traits<SM>::halfedge_descriptor SM_halfedge;
+typedef SM::Property_map<SM_vertex, K::Point_2> UV_map;
+typedef SM::Property_map<SM_face, double> Density_map;
+typedef SMP::Discrete_lie_flow_parameterizer_3<SM> Dlf;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 Exact_point_2;
+
+const double Density_tolerance = 5e-4;
+
+struct Loaded
+{
+  SM sm;
+  SM_halfedge bhd;
+  double diagonal = 0;
+};
+
+void load(const std::string& name, Loaded& m)
+{
+  std::ifstream in(std::string(DLF_DATA_DIR) + "/meshes/" + name + ".off");
+  ASSERT_TRUE(in && (in >> m.sm)) << name;
+  m.bhd = boost::graph_traits<SM>::null_halfedge();
+  for(SM_halfedge h : halfedges(m.sm))
+    if(is_border(h, m.sm)) { m.bhd = h; break; }
+  ASSERT_NE(m.bhd, boost::graph_traits<SM>::null_halfedge());
+  CGAL::Bbox_3 b;
+  for(SM_vertex v : vertices(m.sm)) b += m.sm.point(v).bbox();
+  m.diagonal = std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) +
+                         CGAL::square(b.zmax() - b.zmin()));
+}
+
+std::vector<std::array<K::Point_2, 3> > domain_triangles(const SM& sm, UV_map uv)
+{
+  std::vector<std::array<K::Point_2, 3> > out;
+  for(SM_face f : faces(sm)) {
+    const SM_halfedge h = halfedge(f, sm);
+    out.push_back({{ get(uv, source(h, sm)), get(uv, target(h, sm)), get(uv, target(next(h, sm), sm)) }});
+  }
+  return out;
+}
+
+/// Faces that are not oriented like the majority, or flat (exact predicate).
+std::size_t inverted_or_flat(const SM& sm, UV_map uv)
+{
+  long positive = 0, negative = 0, zero = 0;
+  for(const auto& t : domain_triangles(sm, uv)) {
+    const CGAL::Orientation o = CGAL::orientation(Exact_point_2(t[0].x(), t[0].y()), Exact_point_2(t[1].x(), t[1].y()),
+                                                  Exact_point_2(t[2].x(), t[2].y()));
+    if(o == CGAL::POSITIVE) ++positive; else if(o == CGAL::NEGATIVE) ++negative; else ++zero;
+  }
+  return std::size_t((std::min)(positive, negative) + zero);
+}
+
+/// Shares of the region: achieved (domain area) and prescribed (ρ·area), in long double.
+std::pair<double, double> shares(const SM& sm, const std::set<SM_face>& region, UV_map uv, Density_map rho)
+{
+  long double dom_in = 0, dom = 0, tgt_in = 0, tgt = 0;
+  for(SM_face f : faces(sm)) {
+    const SM_halfedge h = halfedge(f, sm);
+    const K::Point_2 &a = get(uv, source(h, sm)), &b = get(uv, target(h, sm)), &c = get(uv, target(next(h, sm), sm));
+    const long double u = std::fabs(((long double)b.x() - a.x()) * ((long double)c.y() - a.y()) -
+                                    ((long double)b.y() - a.y()) * ((long double)c.x() - a.x())) / 2;
+    const K::Point_3 &p = sm.point(source(h, sm)), &q = sm.point(target(h, sm)), &r = sm.point(target(next(h, sm), sm));
+    const long double t = get(rho, f) * std::sqrt((long double)CGAL::squared_area(p, q, r));
+    dom += u; tgt += t;
+    if(region.count(f)) { dom_in += u; tgt_in += t; }
+  }
+  return std::make_pair(double(dom_in / dom), double(tgt_in / tgt));
+}
+
+struct Flow_run
+{
+  SMP::Error_code code = SMP::OK;
+  std::size_t iterations = 0;
+  double d_area = 0;
+  std::string stop, message;
+  std::vector<K::Point_2> uv;
+};
+
+/// One run of the default parameterizer (Tutte on a circle, certified flow).
+template <class Setup>
+Flow_run flow(Loaded& m, double tolerance, Setup setup)
+{
+  UV_map uv = m.sm.add_property_map<SM_vertex, K::Point_2>("v:uv").first;
+  SMP::Discrete_lie_flow_options options;
+  options.tolerance = tolerance;
+  Dlf dlf(Dlf::Initial_parameterizer(), options);
+  setup(dlf);
+  Flow_run r;
+  r.code = SMP::parameterize(m.sm, dlf, m.bhd, uv);
+  r.iterations = dlf.report().iterations;
+  r.d_area = dlf.report().final_d_area;
+  r.stop = SMP::stop_reason_name(dlf.report().stop_reason);
+  r.message = dlf.report().message;
+  for(SM_vertex v : vertices(m.sm)) r.uv.push_back(get(uv, v));
+  return r;
+}
+
+struct No_density { void operator()(Dlf&) const {} };
+
+/// Region shares for factors 0.25 … 16, exact orientation, and iterations
+/// against the plain run at the same tolerance.
+void check_region_factors(const std::string& name, const std::vector<SM_face>& region_faces, Loaded& m, double band)
+{
+  const std::set<SM_face> region(region_faces.begin(), region_faces.end());
+  ASSERT_GT(region.size(), 50u);
+  ASSERT_LT(region.size(), num_faces(m.sm) / 4);
+  const Flow_run plain = flow(m, Density_tolerance, No_density());
+  ASSERT_EQ(plain.code, SMP::OK) << plain.message;
+  Density_map rho = m.sm.add_property_map<SM_face, double>("f:rho", 1.).first;
+  UV_map uv = m.sm.property_map<SM_vertex, K::Point_2>("v:uv").first;
+  for(double factor : { 0.25, 0.5, 2., 4., 16. }) {
+    SCOPED_TRACE(name + ", factor " + std::to_string(factor));
+    SMP::set_region_density(m.sm, region_faces, factor, rho, band);
+    const Flow_run r = flow(m, Density_tolerance, [&](Dlf& d) { d.set_face_density(rho); });
+    ASSERT_EQ(r.code, SMP::OK) << r.message;
+    EXPECT_EQ(inverted_or_flat(m.sm, uv), 0u);
+    const std::pair<double, double> s = shares(m.sm, region, uv, rho);
+    // The library's helper agrees with the recomputation.
+    const std::pair<double, double> h = SMP::region_area_fractions(m.sm, region_faces, uv, rho);
+    EXPECT_NEAR(h.first, s.first, 1e-12);
+    EXPECT_NEAR(h.second, s.second, 1e-12);
+    const double ratio = double(r.iterations) / double(plain.iterations);
+    std::printf("  %-16s factor %5.2f: share %.5f prescribed, %.5f achieved (%+.3f%%), %zu iterations (%s), "
+                "%.2f x plain (%zu)\n", name.c_str(), factor, s.second, s.first, 100 * (s.first - s.second) / s.second,
+                r.iterations, r.stop.c_str(), ratio, plain.iterations);
+    EXPECT_LE(std::abs(s.first - s.second), 0.01 * s.second);
+    // Cost: within 2× of the plain run up to factor 4; factor 16 costs up
+    // to 2× on these meshes, more on others (doc/measure_control.md).
+    EXPECT_LE(ratio, factor <= 4 ? 2. : 2.5);
+  }
+}
+
+} // namespace
+
+// A Euclidean ball around one of the three peaks (the peaks point to −y),
+// a density jump at its border (no band).
+TEST(DensityRegions, ThreePeaksBallSharesWithinOnePercent)
+{
+  Loaded m;
+  load("three_peaks", m);
+  const std::vector<SM_face> region = SMP::faces_in_ball(m.sm, K::Point_3(-4.25, -7.132335, 12.742857), 0.15 * m.diagonal);
+  check_region_factors("three_peaks", region, m, 0.);
+}
+
+// A geodesic (edge-path) ball around a vertex of the bumped sheet, with a
+// transition band.
+TEST(DensityRegions, MeshWithBorderGeodesicBallSharesWithinOnePercent)
+{
+  Loaded m;
+  load("mesh_with_border", m);
+  const std::vector<SM_face> region = SMP::faces_in_geodesic_ball(m.sm, SM_vertex(54), 0.15 * m.diagonal);
+  check_region_factors("mesh_with_border", region, m, 0.1 * m.diagonal);
+}
+
+// ρ ≡ 1, given as a face map, a vertex map or the options' vector, is the
+// area-preserving run, bit for bit.
+TEST(DensityExactness, DensityOneIsTheAreaPreservingMap)
+{
+  Loaded m;
+  load("nefertiti", m);
+  const Flow_run plain = flow(m, Density_tolerance, No_density());
+  ASSERT_EQ(plain.code, SMP::OK);
+  Density_map one = m.sm.add_property_map<SM_face, double>("f:one", 1.).first;
+  auto vertex_one = m.sm.add_property_map<SM_vertex, double>("v:one", 1.).first;
+  const Flow_run by_face = flow(m, Density_tolerance, [&](Dlf& d) { d.set_face_density(one); });
+  const Flow_run by_vertex = flow(m, Density_tolerance, [&](Dlf& d) { d.set_vertex_density(vertex_one); });
+  const Flow_run by_vector = flow(m, Density_tolerance, [&](Dlf& d) { d.options().face_density.assign(num_faces(m.sm), 1.); });
+  for(const Flow_run* r : { &by_face, &by_vertex, &by_vector }) {
+    ASSERT_EQ(r->code, SMP::OK);
+    EXPECT_EQ(r->iterations, plain.iterations);
+    ASSERT_EQ(r->uv.size(), plain.uv.size());
+    for(std::size_t i = 0; i < plain.uv.size(); ++i) {
+      ASSERT_EQ(r->uv[i].x(), plain.uv[i].x()) << "vertex " << i;
+      ASSERT_EQ(r->uv[i].y(), plain.uv[i].y()) << "vertex " << i;
+    }
+  }
+}
+
+// ρ and c·ρ prescribe the same shares, hence the same map: bit for bit when
+// c is a power of two (the scaling is exact); to 1e-9 over the first 20
+// iterations for any other c. Later, the last-bit differences of c·ρ grow
+// (×10 every ~4 iterations in the tail, along motions that D_area hardly
+// sees), the plateau test fires a few iterations apart, and the stopped maps
+// differ by ~2e-3 of the domain size: there the test only asks for the same
+// share (1e-3 relative) and D_area (within the tolerance).
+TEST(DensityExactness, ScaledDensityGivesTheSameMap)
+{
+  Loaded m;
+  load("nefertiti", m);
+  const std::vector<SM_face> region = SMP::faces_in_ball(m.sm, m.sm.point(SM_vertex(100)), 0.15 * m.diagonal);
+  const std::set<SM_face> region_set(region.begin(), region.end());
+  Density_map rho = m.sm.add_property_map<SM_face, double>("f:rho", 1.).first;
+  Density_map scaled = m.sm.add_property_map<SM_face, double>("f:scaled", 1.).first;
+  UV_map uv = m.sm.add_property_map<SM_vertex, K::Point_2>("v:uv").first;
+  SMP::set_region_density(m.sm, region, 4., rho, 0.05 * m.diagonal);
+  auto max_difference = [](const Flow_run& a, const Flow_run& b) {
+    double extent = 0, difference = 0;
+    for(std::size_t i = 0; i < a.uv.size(); ++i) {
+      extent = (std::max)(extent, (std::max)(std::abs(a.uv[i].x()), std::abs(a.uv[i].y())));
+      difference = (std::max)(difference, std::sqrt(CGAL::squared_distance(a.uv[i], b.uv[i])));
+    }
+    return difference / extent;
+  };
+  for(double c : { 1e3 / 3, 1e-7, std::ldexp(1., -20), std::ldexp(1., 30) }) {
+    SCOPED_TRACE("c = " + std::to_string(c));
+    int exponent;
+    const bool exact = std::frexp(c, &exponent) == 0.5; // c is a power of two
+    for(SM_face f : faces(m.sm)) put(scaled, f, c * get(rho, f));
+    double d_area[2];
+    std::pair<double, double> share[2];
+    Flow_run full[2], first[2];
+    for(int k = 0; k < 2; ++k) {
+      Density_map map = k == 0 ? rho : scaled;
+      first[k] = flow(m, Density_tolerance, [&](Dlf& d) { d.set_face_density(map); d.options().max_iterations = 20; });
+      full[k] = flow(m, Density_tolerance, [&](Dlf& d) { d.set_face_density(map); });
+      ASSERT_EQ(full[k].code, SMP::OK);
+      EXPECT_EQ(inverted_or_flat(m.sm, uv), 0u);
+      share[k] = shares(m.sm, region_set, uv, rho);
+      d_area[k] = full[k].d_area;
+    }
+    EXPECT_EQ(first[0].iterations, 20u);
+    EXPECT_LE(max_difference(first[0], first[1]), 1e-9);
+    if(exact) {
+      EXPECT_EQ(full[0].iterations, full[1].iterations);
+      EXPECT_EQ(max_difference(full[0], full[1]), 0.);
+    }
+    EXPECT_NEAR(share[0].first, share[1].first, 1e-3 * share[0].first);
+    EXPECT_NEAR(d_area[0], d_area[1], Density_tolerance);
+    std::printf("  c = %-10g: maps differ by %.1e after 20 iterations, %.1e at the stop (%zu, %zu iterations); "
+                "shares %.8f, %.8f\n", c, max_difference(first[0], first[1]), max_difference(full[0], full[1]),
+                full[0].iterations, full[1].iterations, share[0].first, share[1].first);
+  }
+}
+
+// Zero, negative, NaN, infinite or wrongly sized densities: a clear error
+// naming the face, and no flow.
+TEST(DensityErrors, InvalidDensitiesAreRefusedNamingTheFace)
+{
+  Loaded m;
+  load("nefertiti", m);
+  Density_map rho = m.sm.add_property_map<SM_face, double>("f:rho", 1.).first;
+  const SM_face bad(17);
+  std::string corners;
+  for(SM_vertex v : vertices_around_face(halfedge(bad, m.sm), m.sm)) corners += " " + std::to_string(v.idx());
+  for(double value : { 0., -1., std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity() }) {
+    SCOPED_TRACE("density " + std::to_string(value));
+    put(rho, bad, value);
+    const Flow_run r = flow(m, Density_tolerance, [&](Dlf& d) { d.set_face_density(rho); });
+    EXPECT_EQ(int(r.code), int(SMP::ERROR_INVALID_DENSITY));
+    EXPECT_NE(r.message.find("face (vertices" + corners + ")"), std::string::npos) << r.message;
+    EXPECT_EQ(r.iterations, 0u);
+    // The same through the options' vector (faces(mesh) order).
+    const Flow_run v = flow(m, Density_tolerance, [&](Dlf& d) {
+      d.options().face_density.assign(num_faces(m.sm), 1.);
+      d.options().face_density[bad.idx()] = value;
+    });
+    EXPECT_EQ(int(v.code), int(SMP::ERROR_INVALID_DENSITY));
+    EXPECT_NE(v.message.find("face (vertices" + corners + ")"), std::string::npos) << v.message;
+  }
+  for(std::size_t size : { num_faces(m.sm) - 1, num_faces(m.sm) + 1, num_vertices(m.sm) }) {
+    const Flow_run r = flow(m, Density_tolerance, [&](Dlf& d) { d.options().face_density.assign(size, 1.); });
+    EXPECT_EQ(int(r.code), int(SMP::ERROR_INVALID_DENSITY)) << size << " values";
+    EXPECT_NE(r.message.find(std::to_string(size) + " values for " + std::to_string(num_faces(m.sm)) + " faces"),
+              std::string::npos) << r.message;
+  }
+}
+
+// Every vertex value is checked, not only the faces' means.
+TEST(DensityErrors, InvalidVertexDensityIsRefused)
+{
+  Loaded m;
+  load("nefertiti", m);
+  auto rho = m.sm.add_property_map<SM_vertex, double>("v:rho", 1.).first;
+  put(rho, SM_vertex(42), 0.);
+  const Flow_run r = flow(m, Density_tolerance, [&](Dlf& d) { d.set_vertex_density(rho); });
+  EXPECT_EQ(int(r.code), int(SMP::ERROR_INVALID_DENSITY));
+  EXPECT_NE(r.message.find("42"), std::string::npos) << r.message;
+}
