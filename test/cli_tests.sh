@@ -47,6 +47,12 @@ count_lines() { grep -c "^$2" "$1"; }
 NEF="$MESHES/nefertiti.off"
 [ -r "$NEF" ] || { echo "FAIL: $NEF not found"; exit 1; }
 
+# --- square border with an ear (CGAL's default corners flatten it) -------------
+"$DLF" disk "$MESHES/three_peaks.off" --border square --quiet --report sq.json
+check "square border on three_peaks exits 0" equals "$?" 0
+check "square border on three_peaks: status ok" equals "$(json_get sq.json "" status)" ok
+check "square border on three_peaks: 0 inverted faces" equals "$(json_get sq.json final inverted_faces)" 0
+
 # --- sphere -------------------------------------------------------------------
 "$DLF" sphere "$MESHES/sphere.off" -o sph.obj --report sph.json > sph.out 2> sph.err
 check "sphere run exits 0" equals "$?" 0
