@@ -625,6 +625,10 @@ int main(int argc, char** argv)
       opt.max_iterations = table2_cap;
       opt.tolerance = table2_tolerance;
       opt.plateau_tolerance = 0; // run to convergence, collapse or the cap, as the paper does
+      // The stall detector (same limiting triangle while λ < 1e-3) would stop
+      // any fixed step below 1e-3 after stall_window iterations: off for
+      // fixed steps, so that "stalled" there means a step that would fold.
+      if(steps[k] > 0) opt.stall_window = table2_cap + 1;
       json r = run_method(DLF_PAPER_CIRCLE, c, opt, 1);
       const std::string& key = step_keys[k];
       row["steps"][key] = r;
@@ -767,7 +771,7 @@ int main(int argc, char** argv)
        << "Iterations to D_area ≤ " << fmt(2 + table2_tolerance, 2) << " on the flowing triangulation; "
        << "\"c@k\" = collapsed at iteration k (the fixed step would fold a flowing triangle: stop reason `stalled`); "
        << "\">" << table2_cap << "\" = iteration cap; \"stalled@k\" = the adaptive flow's stall detector stopped it "
-       << "after k iterations; plateau detection off. In brackets: the best D_area reached, then the seconds.\n\n| mesh (F) |";
+       << "after k iterations; plateau detection off, stall detection off for the fixed steps. In brackets: the best D_area reached, then the seconds.\n\n| mesh (F) |";
     for(const std::string& key : step_keys) md << " " << key << " |";
     md << "\n|---|";
     for(std::size_t k = 0; k < step_keys.size(); ++k) md << "---:|";
