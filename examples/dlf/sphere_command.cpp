@@ -62,7 +62,7 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
     ("max-iterations", po::value<std::size_t>(&s.options.max_iterations), "iteration cap (default 500)")
     ("mu", po::value<double>(&s.options.mu), "fraction of the critical step, in (0, 1) (default 0.8)")
     ("history", "per-iteration history in the report")
-    ("quiet", "print nothing on success")
+    ("quiet,q", "print nothing on success")
     ("verbose", "one line per iteration");
   po::options_description all;
   all.add(visible);
