@@ -250,11 +250,6 @@ struct Run
   SMP::Discrete_lie_flow_report report;
 };
 
-struct Settings
-{
-  fs::path scratch;  // working directory of the CGAL calls (Iterative authalic writes ./last_solve.off)
-};
-
 static Run run_once(int method, const Mesh_case& c, const SMP::Discrete_lie_flow_options& base_options)
 {
   SM m = c.mesh; // fresh copy: same vertex and halfedge indices
