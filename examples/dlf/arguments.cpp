@@ -152,10 +152,18 @@ const char* disk_examples =
   "      the paper's algorithm (edge flips), its per-iteration history and flipped triangulation\n"
   "  dlf disk face.off -o face_uv.obj --roi-ball 0.1 -0.2 0.5 0.3 --factor 4 --band 0.1 --svg roi.svg\n"
   "      measure control: the faces in the ball get 4 times their share of the domain area\n"
+  "  dlf disk face.off -o face_uv.obj --svg face.svg --texture face_tex.obj --plot-convergence conv.svg\n"
+  "           --plot-histogram hist.svg\n"
+  "      every picture: layout, textured mesh (face_tex.obj + .mtl + .png), convergence, histograms\n"
   "  dlf disk face.off -o face_uv.obj --density rho.txt --report rho.json\n"
   "      a density per face or per vertex (plain-text numbers), density-weighted metrics\n"
   "  dlf score face.off face_uv.obj\n"
   "      the distortion of a map written by 'dlf disk' (or any per-vertex uv OBJ)\n"
+  "  dlf info face.off\n"
+  "      topology and degeneracies of a mesh, and which command fits it\n"
+  "\n"
+  "Progress: one line per iteration (iteration, step, residual, d_area, elapsed), rewritten in\n"
+  "place when stdout is a terminal, plain lines otherwise; -q silences it, -v adds details.\n"
   "\n"
   "Exit status: 0 success, 1 usage error or unsuitable input (unreadable, not a disk,\n"
   "degenerate triangles, ...), 2 the flow failed (e.g. the initial map folds). When the\n"
@@ -171,6 +179,7 @@ void print_main_help(std::ostream& out)
          "  dlf disk INPUT [options]        map a disk-topology triangle mesh onto the plane\n"
          "  dlf score MESH PARAM.obj        measure the distortion of an existing map\n"
          "  dlf sphere INPUT [options]      map a closed genus-0 mesh onto the unit sphere\n"
+         "  dlf info MESH                   topology and degeneracy report; which command fits\n"
          "\n"
          "'dlf COMMAND --help' lists the options of a command.\n\n"
       << disk_examples;
@@ -210,7 +219,17 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
     ("domain-mesh", po::value<std::string>(&s.domain_mesh)->value_name("DOMAIN.obj"),
      "write the final domain triangulation (differs from the input's in paper mode)")
     ("svg", po::value<std::string>(&s.svg)->value_name("LAYOUT.svg"),
-     "draw the uv layout, triangles coloured by area ratio")
+     "draw the uv layout, triangles coloured by area ratio, with a colour bar and the outline of the regions "
+     "of interest (or of the pieces of a piecewise-constant --density)")
+    ("plot-convergence", po::value<std::string>(&s.convergence_svg)->value_name("PLOT.svg"),
+     "plot d_area - 2 and the area residual per iteration (log scale)")
+    ("plot-histogram", po::value<std::string>(&s.histogram_svg)->value_name("PLOT.svg"),
+     "histograms of the per-face log area ratios of the initial map and of the result")
+    ("texture", po::value<std::string>(&s.texture_obj)->value_name("NAME.obj"),
+     "write NAME.obj (uv scaled into [0,1]^2), NAME.mtl and NAME.png (a checkerboard): the mesh opens "
+     "textured in MeshLab or Blender")
+    ("texture-size", po::value<int>(&s.texture_size)->value_name("N")->default_value(s.texture_size),
+     "pixels a side of the checkerboard PNG (16 x 16 squares)")
     ("tolerance", po::value<double>(&tolerance)->value_name("X")->default_value(tolerance),
      tolerance_help.str().c_str())
     ("max-iterations", po::value<long long>(&max_iterations)->value_name("N")->default_value(max_iterations),
@@ -234,8 +253,9 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
     ("band", po::value<double>(&s.band)->value_name("W"),
      "width (3D length, along edges) of a transition from each region's factor to 1 around it")
     ("history", "add the per-iteration history to the report")
-    ("quiet,q", "print nothing on success")
-    ("verbose,v", "print one line per iteration");
+    ("quiet,q", "print nothing on success (no progress, no summary)")
+    ("verbose,v", "progress with the step's details (critical step, limiting face, backtracks), never "
+     "overwritten, and the time spent writing each output");
 
   std::vector<po::option> ordered;
   const po::variables_map vm = parse("disk", glue_roi_ball(args), o, "input", &ordered);
@@ -263,6 +283,10 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
   if(!(tolerance >= 0) || !std::isfinite(tolerance)) throw Cli_error("--tolerance must be a number >= 0");
   if(vm.count("mu") && !(mu > 0 && mu < 1)) throw Cli_error("--mu must be in (0, 1)");
   if(max_iterations < 0) throw Cli_error("--max-iterations must be >= 0");
+  // Below 16 pixels a side the 16 squares vanish; above 16384 the PNG is huge.
+  if(s.texture_size < 16 || s.texture_size > 16384) throw Cli_error("--texture-size must be in [16, 16384]");
+  if(vm.count("texture-size") && !vm["texture-size"].defaulted() && s.texture_obj.empty())
+    throw Cli_error("--texture-size applies to --texture only");
   s.regions = regions_of(ordered);
   if(!s.density_file.empty() && !s.regions.empty()) throw Cli_error("--density and --roi/--roi-ball exclude each other");
   if(vm.count("band") && s.regions.empty()) throw Cli_error("--band applies to --roi and --roi-ball only");
@@ -282,7 +306,8 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
   opt.max_iterations = std::size_t(max_iterations);
   opt.lump_targets_on_flowing_faces = vm.count("literal-targets") == 0;
   opt.delaunay_flips = vm.count("no-flips") == 0;
-  opt.record_history = vm.count("history") != 0;
+  s.history_in_report = vm.count("history") != 0;
+  opt.record_history = s.history_in_report || !s.convergence_svg.empty();
   return true;
 }
 

@@ -36,6 +36,10 @@ struct Disk_settings
 {
   std::string input;
   std::string output, report, domain_mesh, svg; ///< empty: not written
+  std::string convergence_svg, histogram_svg;   ///< `--plot-convergence`, `--plot-histogram`
+  std::string texture_obj;                      ///< `--texture`: NAME.obj, with NAME.mtl and NAME.png
+  int texture_size = 1024;                      ///< `--texture-size`: pixels a side
+  bool history_in_report = false;               ///< `--history`
   std::string mode = "certified";               ///< certified | paper
   std::string init = "tutte";                   ///< tutte | mvc | dcp | lscm | arap
   std::string border;                           ///< circle | square | free (resolved from init if not given)

@@ -7,11 +7,12 @@
 #include "cli_error.h"
 #include "commands.h"
 #include "density_input.h"
+#include "disk_pictures.h"
 #include "disk_run.h"
 #include "metrics.h"
 #include "obj_io.h"
 #include "output_files.h"
-#include "svg_layout.h"
+#include "progress.h"
 
 #include <nlohmann/json.hpp>
 
@@ -43,14 +44,6 @@ bool is_input_error(int code)
   return code == SMP::ERROR_EMPTY_MESH || code == SMP::ERROR_NON_TRIANGULAR_MESH ||
          code == SMP::ERROR_NO_TOPOLOGICAL_DISC || code == SMP::ERROR_DEGENERATE_INPUT ||
          code == SMP::ERROR_INVALID_DENSITY;
-}
-
-bool print_iteration(const SMP::Discrete_lie_flow_iteration& it)
-{
-  std::printf("  iteration %4zu  d_area %.10g  step %.3g (critical %.3g, face %d)  backtracks %zu  flips %zu  %.2f s\n",
-              it.iteration, it.d_area, it.step, it.critical_step, it.limiting_face, it.backtracks, it.flips, it.seconds);
-  std::fflush(stdout);
-  return true;
 }
 
 json history_json(const std::vector<SMP::Discrete_lie_flow_iteration>& history)
@@ -105,7 +98,7 @@ json regions_json(const Density_setup& d, bool measured)
 }
 
 json make_report(const Disk_settings& s, const Indexed_mesh& mesh, const Disk_run& run, const Metrics* initial,
-                 const Metrics* final_metrics, const Density_setup& density)
+                 const Metrics* final_metrics, const Density_setup& density, double picture_seconds)
 {
   const SMP::Discrete_lie_flow_report& R = run.report;
   json j;
@@ -116,7 +109,8 @@ json make_report(const Disk_settings& s, const Indexed_mesh& mesh, const Disk_ru
   j["faces"] = mesh.faces.size();
   j["iterations"] = R.iterations;
   j["stop_reason"] = SMP::stop_reason_name(R.stop_reason);
-  j["seconds"] = { { "initial", R.seconds_initial }, { "flow", R.seconds_flow }, { "total", run.seconds } };
+  j["seconds"] = { { "initial", R.seconds_initial }, { "flow", R.seconds_flow }, { "total", run.seconds },
+                   { "pictures", picture_seconds } };
   j["initial"] = initial ? metrics_to_json(*initial) : json(nullptr);
   j["final"] = final_metrics ? metrics_to_json(*final_metrics) : json(nullptr);
   j["mode"] = s.mode;
@@ -136,13 +130,14 @@ json make_report(const Disk_settings& s, const Indexed_mesh& mesh, const Disk_ru
   // Metrics above are density-weighted (DESIGN.md) when a density is given.
   j["density"] = density_json(s, density);
   if(!density.regions.empty()) j["regions"] = regions_json(density, final_metrics != nullptr);
-  if(s.options.record_history) j["history"] = history_json(R.history);
+  if(s.history_in_report) j["history"] = history_json(R.history);
   return j;
 }
 
 void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh& mesh, const Disk_run& run,
                    const Metrics* initial, const Metrics* final_metrics, const Density_setup& density,
-                   const std::vector<std::string>& written)
+                   const std::vector<std::string>& written,
+                   const std::vector<std::pair<std::string, double> >& picture_timings)
 {
   const SMP::Discrete_lie_flow_report& R = run.report;
   out << std::setprecision(8);
@@ -170,6 +165,8 @@ void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh
   }
   out << std::setprecision(3) << "  seconds: initial map " << R.seconds_initial << ", flow " << R.seconds_flow
       << ", total " << run.seconds << "\n";
+  if(s.verbosity == Verbosity::VERBOSE)
+    for(const auto& p : picture_timings) out << "  seconds writing " << p.first << ": " << p.second << "\n";
   for(const std::string& w : written) out << "  wrote " << w << "\n";
 }
 
@@ -183,7 +180,7 @@ int disk_command(const std::vector<std::string>& args)
   Output_files outputs;
   if(!s.output.empty()) outputs.declare(s.output, "-o");
   if(!s.domain_mesh.empty()) outputs.declare(s.domain_mesh, "--domain-mesh");
-  if(!s.svg.empty()) outputs.declare(s.svg, "--svg");
+  declare_pictures(outputs, s);
   if(!s.report.empty()) outputs.declare(s.report, "--report");
 
   const Indexed_mesh mesh = read_triangle_mesh(s.input);
@@ -191,8 +188,10 @@ int disk_command(const std::vector<std::string>& args)
   Density_setup density = make_density(mesh, s);
   s.options.face_density = density.face_density; // faces in input order, as Surface_mesh keeps them
 
-  if(s.verbosity == Verbosity::VERBOSE) s.options.callback = &print_iteration;
+  Progress progress(s.verbosity, s.mode == "paper");
+  s.options.callback = progress.callback();
   const Disk_run run = run_disk(mesh, s);
+  progress.finish();
   const bool ok = run.status == SMP::OK;
 
   Metrics initial, final_metrics;
@@ -205,6 +204,7 @@ int disk_command(const std::vector<std::string>& args)
   const Metrics* final_ptr = ok ? &final_metrics : nullptr;
 
   // On a flow error, only the report is written: it says what went wrong.
+  std::vector<std::pair<std::string, double> > picture_timings;
   if(ok) {
     std::ostringstream comment;
     comment << std::setprecision(10) << "dlf disk " << s.input << ": mode " << s.mode << ", init " << s.init
@@ -220,24 +220,18 @@ int disk_command(const std::vector<std::string>& args)
         write_uv_obj(o, mesh.xyz, run.final_uv, domain, comment.str() + " (domain triangulation)");
       });
     }
-    if(!s.svg.empty()) {
-      std::vector<int> roi;
-      for(const Density_region& r : density.regions) roi.insert(roi.end(), r.faces.begin(), r.faces.end());
-      std::sort(roi.begin(), roi.end());
-      roi.erase(std::unique(roi.begin(), roi.end()), roi.end());
-      outputs.write(s.svg, [&](std::ostream& o) {
-        write_svg_layout(o, mesh, run.final_uv, comment.str(), density.face_density, region_outline(mesh, roi));
-      });
-    }
+    picture_timings = write_pictures(outputs, s, mesh, run, density, comment.str());
   }
   if(!s.report.empty()) {
-    const json report = make_report(s, mesh, run, initial_ptr, final_ptr, density);
+    double picture_seconds = 0;
+    for(const auto& p : picture_timings) picture_seconds += p.second;
+    const json report = make_report(s, mesh, run, initial_ptr, final_ptr, density, picture_seconds);
     outputs.write(s.report, [&](std::ostream& o) { o << report.dump(2) << '\n'; });
   }
   outputs.commit();
 
   if(s.verbosity != Verbosity::QUIET)
-    print_summary(std::cout, s, mesh, run, initial_ptr, final_ptr, density, outputs.committed());
+    print_summary(std::cout, s, mesh, run, initial_ptr, final_ptr, density, outputs.committed(), picture_timings);
   // A region that missed its share is not an error (the map is valid), but never silent.
   for(const Density_region& r : density.regions)
     if(ok && !(std::abs(r.relative_error()) <= region_share_tolerance))

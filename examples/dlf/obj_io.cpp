@@ -3,6 +3,7 @@
 
 #include "obj_io.h"
 #include "cli_error.h"
+#include "text_buffer.h"
 
 #include <cmath>
 #include <cstdio>
@@ -11,29 +12,26 @@
 
 namespace dlf_cli {
 
-namespace {
-
-// %.17g: enough digits for every double to read back exactly.
-std::string full_precision(double x)
-{
-  char buffer[32];
-  std::snprintf(buffer, sizeof(buffer), "%.17g", x);
-  return buffer;
-}
-
-} // namespace
-
 void write_uv_obj(std::ostream& out, const std::vector<Vec3>& xyz, const std::vector<Vec2>& uv,
                   const std::vector<Triangle>& faces, const std::string& comment)
 {
-  if(!comment.empty()) out << "# " << comment << "\n";
-  for(const Vec3& p : xyz)
-    out << "v " << full_precision(p[0]) << ' ' << full_precision(p[1]) << ' ' << full_precision(p[2]) << '\n';
-  for(const Vec2& t : uv) out << "vt " << full_precision(t[0]) << ' ' << full_precision(t[1]) << '\n';
+  Text_buffer text(out);
+  if(!comment.empty()) text << "# " << comment << "\n";
+  for(const Vec3& p : xyz) {
+    text << "v ";
+    text.exact(p[0]) << ' ';
+    text.exact(p[1]) << ' ';
+    text.exact(p[2]) << '\n';
+  }
+  for(const Vec2& t : uv) {
+    text << "vt ";
+    text.exact(t[0]) << ' ';
+    text.exact(t[1]) << '\n';
+  }
   for(const Triangle& f : faces) {
-    out << 'f';
-    for(int k = 0; k < 3; ++k) out << ' ' << f[k] + 1 << '/' << f[k] + 1;
-    out << '\n';
+    text << 'f';
+    for(int k = 0; k < 3; ++k) text << ' ' << f[k] + 1 << '/' << f[k] + 1;
+    text << '\n';
   }
 }
 

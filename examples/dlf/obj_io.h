@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The tool's OBJ convention: `v` the input 3D positions, `vt` the uv of the
-// same vertex (same order), faces `f a/a b/b c/c`; numbers at full precision
-// so that a map read back is bit-identical.
+// same vertex (same order), faces `f a/a b/b c/c`; each number in the
+// shortest form that reads back as the same double (bit-identical).
 
 #ifndef DLF_CLI_OBJ_IO_H
 #define DLF_CLI_OBJ_IO_H

@@ -5,11 +5,15 @@
 // sphere points in input vertex order with the input faces (all outputs or
 // none), and the JSON report of DESIGN.md.
 
+#include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
 #include "metrics.h"
 #include "mesh_input.h"
 #include "output_files.h"
+#include "progress.h"
+#include "svg_plots.h"
+#include "svg_sphere.h"
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -22,6 +26,7 @@
 #include <cstdio>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 
 namespace dlf_cli {
 
@@ -34,7 +39,7 @@ typedef CGAL::Simple_cartesian<double> Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 
 const char* sphere_help =
-  "Usage: dlf sphere INPUT [-o OUT.obj] [--report R.json] [options]\n"
+  "Usage: dlf sphere INPUT [-o OUT.obj] [--report R.json] [--svg VIEW.svg] [options]\n"
   "\n"
   "Maps a closed genus-0 triangle mesh onto the unit sphere, area-preserving,\n"
   "every triangle positively oriented (exact predicate). OUT.obj holds the\n"
@@ -42,13 +47,19 @@ const char* sphere_help =
   "\n"
   "Examples:\n"
   "  dlf sphere build/data/meshes/cow.off -o cow_sphere.obj --report cow.json\n"
-  "  dlf sphere bunny.off --tolerance 1e-3 --verbose\n";
+  "  dlf sphere bunny.off --tolerance 1e-3 --verbose\n"
+  "  dlf sphere cow.off --svg cow_sphere.svg --plot-convergence cow_conv.svg\n"
+  "      the sphere seen from +z and -z, coloured by area ratio; the convergence plot\n"
+  "\n"
+  "Progress: one line per iteration (iteration, step, residual, d_area, elapsed), rewritten in\n"
+  "place when stdout is a terminal, plain lines otherwise; -q silences it, -v adds details.\n";
 
 struct Sphere_settings
 {
-  std::string input, output, report;
+  std::string input, output, report, svg, convergence_svg;
   SMP::Discrete_lie_flow_options options;
-  bool quiet = false, verbose = false;
+  Verbosity verbosity = Verbosity::NORMAL;
+  bool history_in_report = false;
 };
 
 bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_settings& s)
@@ -58,12 +69,16 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
     ("help,h", "this help")
     ("output,o", po::value<std::string>(&s.output), "OBJ with the sphere points")
     ("report", po::value<std::string>(&s.report), "JSON report")
+    ("svg", po::value<std::string>(&s.svg)->value_name("VIEW.svg"),
+     "draw the sphere from +z and from -z (orthographic), triangles coloured by area ratio")
+    ("plot-convergence", po::value<std::string>(&s.convergence_svg)->value_name("PLOT.svg"),
+     "plot d_area - 2 and the area residual per iteration (log scale)")
     ("tolerance", po::value<double>(&s.options.tolerance), "stop when d_area - 2 <= this (default 0.01)")
     ("max-iterations", po::value<std::size_t>(&s.options.max_iterations), "iteration cap (default 500)")
     ("mu", po::value<double>(&s.options.mu), "fraction of the critical step, in (0, 1) (default 0.8)")
     ("history", "per-iteration history in the report")
-    ("quiet,q", "print nothing on success")
-    ("verbose", "one line per iteration");
+    ("quiet,q", "print nothing on success (no progress, no summary)")
+    ("verbose,v", "progress with the step's details, never overwritten");
   po::options_description all;
   all.add(visible);
   all.add_options()("input", po::value<std::vector<std::string> >());
@@ -88,17 +103,10 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
   if(!(s.options.tolerance >= 0)) throw Cli_error("--tolerance must be >= 0");
   if(vm.count("mu") && !(s.options.mu > 0 && s.options.mu < 1)) throw Cli_error("--mu must be in (0, 1)");
   if(vm.count("quiet") && vm.count("verbose")) throw Cli_error("--quiet and --verbose exclude each other");
-  s.quiet = vm.count("quiet") > 0;
-  s.verbose = vm.count("verbose") > 0;
-  s.options.record_history = vm.count("history") > 0;
-  return true;
-}
-
-bool print_iteration(const SMP::Discrete_lie_flow_iteration& it)
-{
-  std::printf("  iteration %4zu  d_area %.10g  step %.3g (critical %.3g)  backtracks %zu  %.2f s\n", it.iteration,
-              it.d_area, it.step, it.critical_step, it.backtracks, it.seconds);
-  std::fflush(stdout);
+  if(vm.count("quiet")) s.verbosity = Verbosity::QUIET;
+  if(vm.count("verbose")) s.verbosity = Verbosity::VERBOSE;
+  s.history_in_report = vm.count("history") > 0;
+  s.options.record_history = s.history_in_report || !s.convergence_svg.empty();
   return true;
 }
 
@@ -111,6 +119,8 @@ int sphere_command(const std::vector<std::string>& args)
   Output_files outputs;
   if(!s.output.empty()) outputs.declare(s.output, "-o");
   if(!s.report.empty()) outputs.declare(s.report, "--report");
+  if(!s.svg.empty()) outputs.declare(s.svg, "--svg");
+  if(!s.convergence_svg.empty()) outputs.declare(s.convergence_svg, "--plot-convergence");
 
   const Indexed_mesh input = read_triangle_mesh(s.input);
   // A Surface_mesh in input order, so that vertex i is input vertex i.
@@ -121,13 +131,15 @@ int sphere_command(const std::vector<std::string>& args)
     if(mesh.add_face(Mesh::Vertex_index(t[0]), Mesh::Vertex_index(t[1]), Mesh::Vertex_index(t[2])) == Mesh::null_face())
       throw Cli_error(s.input + ": face " + std::to_string(f) + " makes the mesh non-manifold");
   }
-  if(s.verbose) s.options.callback = &print_iteration;
+  Progress progress(s.verbosity, false);
+  s.options.callback = progress.callback();
 
   const auto start = std::chrono::steady_clock::now();
   SMP::Discrete_lie_flow_sphere_parameterizer_3<Mesh> dlf(s.options);
   Mesh::Property_map<Mesh::Vertex_index, Kernel::Point_3> sphere =
     mesh.add_property_map<Mesh::Vertex_index, Kernel::Point_3>("v:dlf_sphere").first;
   const SMP::Error_code status = dlf.parameterize(mesh, sphere);
+  progress.finish();
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const SMP::Discrete_lie_flow_sphere_report& R = dlf.report();
   const bool ok = status == SMP::OK;
@@ -148,6 +160,18 @@ int sphere_command(const std::vector<std::string>& args)
       }
       for(const Triangle& t : input.faces) o << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
     });
+  std::ostringstream caption;
+  caption << "dlf sphere " << s.input << ": d_area " << std::setprecision(10) << R.final_metrics.d_area;
+  if(ok && !s.svg.empty()) {
+    std::vector<Vec3> points;
+    points.reserve(input.xyz.size());
+    for(Mesh::Vertex_index v : mesh.vertices()) points.push_back({{ sphere[v].x(), sphere[v].y(), sphere[v].z() }});
+    outputs.write(s.svg, [&](std::ostream& o) { write_svg_sphere(o, input, points, caption.str()); });
+  }
+  if(ok && !s.convergence_svg.empty())
+    outputs.write(s.convergence_svg, [&](std::ostream& o) {
+      write_convergence_plot(o, R.history, R.initial_d_area, s.options.tolerance, caption.str());
+    });
   if(!s.report.empty() && !input_error) {
     json j;
     j["status"] = SMP::discrete_lie_flow_error_name(status);
@@ -162,7 +186,7 @@ int sphere_command(const std::vector<std::string>& args)
     j["final"] = ok ? metrics_to_json(R.final_metrics) : json(nullptr);
     j["puncture_face"] = R.puncture_face;
     j["rejected_by_exact_check"] = R.rejected_by_exact_check;
-    if(s.options.record_history) {
+    if(s.history_in_report) {
       json h = json::array();
       for(const SMP::Discrete_lie_flow_iteration& it : R.history)
         h.push_back({ { "iteration", it.iteration }, { "step", it.step }, { "critical_step", it.critical_step },
@@ -173,7 +197,7 @@ int sphere_command(const std::vector<std::string>& args)
   }
   outputs.commit();
 
-  if(!s.quiet && ok) {
+  if(s.verbosity != Verbosity::QUIET && ok) {
     std::cout << std::setprecision(8) << "dlf sphere " << s.input << ": " << input.xyz.size() << " vertices, "
               << input.faces.size() << " faces\n"
               << "  status " << SMP::discrete_lie_flow_error_name(status) << ": " << R.message << "\n";

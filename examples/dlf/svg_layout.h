@@ -20,11 +20,13 @@
 namespace dlf_cli {
 
 /// `face_density`: per face, empty for ρ ≡ 1. `outline`: edges (vertex
-/// pairs) drawn as dark lines over the triangles.
+/// pairs) drawn as dark lines over the triangles, named in the legend by
+/// `outline_label`.
 void write_svg_layout(std::ostream& out, const Indexed_mesh& mesh, const std::vector<Vec2>& uv,
                       const std::string& caption,
                       const std::vector<double>& face_density = std::vector<double>(),
-                      const std::vector<std::array<int, 2> >& outline = std::vector<std::array<int, 2> >());
+                      const std::vector<std::array<int, 2> >& outline = std::vector<std::array<int, 2> >(),
+                      const std::string& outline_label = "region of interest");
 
 } // namespace dlf_cli
 

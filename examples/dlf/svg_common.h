@@ -1,0 +1,48 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What the tool's SVG pictures share: the diverging colour scale of log area
+// ratios and its colour bar, per-face log area ratios, XML escaping.
+
+#ifndef DLF_CLI_SVG_COMMON_H
+#define DLF_CLI_SVG_COMMON_H
+
+#include "mesh_input.h"
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace dlf_cli {
+
+/// The colour scale saturates at a factor 4 either way.
+extern const double svg_clamp_log;
+extern const double svg_bar_width;
+
+/// White at ratio 1, blue where the domain is too small, red where it is too
+/// large, as "#rrggbb".
+const std::string& colour_of_log_ratio(double log_ratio);
+
+std::string xml_escape(const std::string& s);
+
+/// The XML declaration, the `<svg>` element (ended by "</svg>\n"), a white
+/// background and the caption as title and first line.
+void write_svg_header(std::ostream& out, double width, double height, const std::string& caption);
+
+/// The vertical colour bar of the scale at (x, y), `height` tall; with a key
+/// for the black triangles when `has_bad_faces`.
+void write_colour_bar(std::ostream& out, double x, double y, double height, bool has_bad_faces, bool weighted);
+
+/// Per face: log(area_Ω / (ρ area_M)) after the uniform scaling of the
+/// metrics (the domain's total area made equal to Σ ρ area_M); NaN for a face
+/// whose domain triangle is flat or, by the sign of its double-precision area,
+/// against the majority orientation. Domain triangles are flat triangles
+/// between the points of `domain` (2D: z = 0).
+std::vector<double> face_log_area_ratios(const Indexed_mesh& mesh, const std::vector<Vec2>& domain,
+                                         const std::vector<double>& face_density);
+std::vector<double> face_log_area_ratios(const Indexed_mesh& mesh, const std::vector<Vec3>& domain,
+                                         const std::vector<double>& face_density);
+
+} // namespace dlf_cli
+
+#endif
