@@ -3,8 +3,10 @@
 #
 #   bash test/cli_tests.sh PATH/TO/dlf MESHES_DIR
 #
-# Exits non-zero if any check fails. Needs only bash, awk and coreutils
-# (reports are read with awk: the tool pretty-prints them, one field a line).
+# Exits non-zero if any check fails. Needs bash, awk and coreutils (reports
+# are read with awk: the tool pretty-prints them, one field a line); the
+# checks of pictures (XML, PNG decoding) need python3 and are skipped, and
+# said so, without it; the check of in-place progress needs `script`.
 set -u
 
 DLF=${1:?usage: cli_tests.sh PATH/TO/dlf MESHES_DIR}
@@ -185,6 +187,118 @@ head -n 10 face.rho > short.rho
 { sed -n '1,5p' face.rho; echo 1,5; sed -n '7,$p' face.rho; } > garbage.rho
 check "no temporaries left" no_temporaries
 
+# --- pictures: layout, convergence, histograms, textured OBJ, sphere view ------
+# svg_polygons FILE: the number of <polygon> elements, after parsing FILE as
+# XML (fails on malformed XML).
+svg_polygons() { python3 -c '
+import sys, xml.etree.ElementTree as ET
+root = ET.parse(sys.argv[1]).getroot()
+print(sum(1 for e in root.iter() if e.tag.split("}")[-1] == "polygon"))' "$1"; }
+# png_size FILE: "WIDTH HEIGHT" of an 8-bit RGB PNG, after checking its
+# signature, every chunk CRC and that its pixel data inflates to the size
+# those dimensions need, with valid filter bytes.
+png_size() { python3 -c '
+import sys, struct, zlib
+data = open(sys.argv[1], "rb").read()
+assert data[:8] == b"\x89PNG\r\n\x1a\n", "no PNG signature"
+pos, idat, ihdr, end = 8, b"", None, False
+while pos < len(data):
+    n, kind = struct.unpack(">I4s", data[pos:pos + 8])
+    body = data[pos + 8:pos + 8 + n]
+    assert struct.unpack(">I", data[pos + 8 + n:pos + 12 + n])[0] == zlib.crc32(kind + body), "bad CRC"
+    if kind == b"IHDR": ihdr = struct.unpack(">IIBBBBB", body)
+    if kind == b"IDAT": idat += body
+    if kind == b"IEND": end = True
+    pos += 12 + n
+w, h, depth, colour = ihdr[:4]
+assert end and depth == 8 and colour == 2, "not an 8-bit RGB PNG"
+raw = zlib.decompress(idat)
+assert len(raw) == h * (1 + 3 * w), "pixel data of the wrong size"
+assert all(raw[y * (1 + 3 * w)] <= 4 for y in range(h)), "bad filter byte"
+print(w, h)' "$1"; }
+if command -v python3 > /dev/null; then
+  "$DLF" disk "$NEF" -o pic.obj --svg pic.svg --plot-convergence conv.svg --plot-histogram hist.svg \
+    --texture tex.obj --texture-size 96 --report pic.json -q > pic.out 2> pic.err
+  check "all pictures: exit 0" equals "$?" 0
+  check "all pictures: -q prints nothing" test ! -s pic.out
+  for f in pic.svg conv.svg hist.svg tex.obj tex.mtl tex.png; do check "all pictures: $f written" test -s "$f"; done
+  check "no temporaries left" no_temporaries
+  check "layout SVG: well-formed, one polygon per face" equals "$(svg_polygons pic.svg)" "$NF"
+  check "convergence SVG: well-formed, one polyline per quantity" equals \
+    "$(python3 -c 'import sys, xml.etree.ElementTree as ET; print(sum(1 for e in ET.parse(sys.argv[1]).getroot().iter() if e.tag.endswith("polyline")))' conv.svg)" 2
+  check "histogram SVG: well-formed" equals "$(svg_polygons hist.svg 2>&1)" 0
+  check "histogram SVG: before and after" bash -c "grep -q 'before the flow' hist.svg && grep -q 'after the flow' hist.svg"
+  check "texture PNG decodes to the requested size" equals "$(png_size tex.png)" "96 96"
+  check "texture OBJ names its MTL, the MTL its PNG" bash -c "grep -qx 'mtllib tex.mtl' tex.obj && grep -qx 'map_Kd tex.png' tex.mtl && grep -qx 'usemtl dlf_checker' tex.obj"
+  check "texture OBJ: one v and vt per vertex, one f per face" equals \
+    "$(count_lines tex.obj 'v ') $(count_lines tex.obj 'vt ') $(count_lines tex.obj 'f ')" "$NV $NV $NF"
+  # The texture's vt are the map's uv moved and scaled into [0,1]^2: read
+  # both OBJs back and compare to the last printed digit.
+  check "texture OBJ: vt = (uv - min) / extent, in [0,1]" python3 -c '
+import sys
+def vt(p): return [tuple(map(float, l.split()[1:3])) for l in open(p) if l.startswith("vt ")]
+uv, t = vt(sys.argv[1]), vt(sys.argv[2])
+x0 = min(u for u, v in uv); y0 = min(v for u, v in uv)
+e = max(max(u for u, v in uv) - x0, max(v for u, v in uv) - y0)
+assert len(uv) == len(t) and all(0 <= c <= 1 for p in t for c in p)
+assert all(abs((u - x0) / e - a) <= 1e-15 and abs((v - y0) / e - b) <= 1e-15 for (u, v), (a, b) in zip(uv, t))' pic.obj tex.obj
+  "$DLF" score "$NEF" tex.obj --report tex_score.json -q
+  check "texture OBJ re-read: the report's d_area (1e-9 relative)" \
+    relatively_equal "$(json_get tex_score.json metrics d_area)" "$(json_get pic.json final d_area)" 1e-9
+  check "OBJ re-read: the uv printed in full (every number reads back to the same text)" python3 -c '
+import sys
+for l in open(sys.argv[1]):
+    if l.startswith(("v ", "vt ")):
+        for tok in l.split()[1:]:
+            x = float(tok); assert float(repr(x)) == x and len(tok) <= 24, tok' pic.obj
+  check "report: seconds spent on pictures" test -n "$(json_get pic.json seconds pictures)"
+  check "report: no history unless --history" bash -c "! grep -q '\"history\"' pic.json"
+  "$DLF" disk "$NEF" --density face.rho --svg rho.svg -q
+  check "layout SVG outlines the pieces of a piecewise-constant density" grep -q "density pieces" rho.svg
+  "$DLF" sphere "$MESHES/sphere.off" --svg sph.svg --plot-convergence sph_conv.svg -q
+  check "sphere view: exit 0" equals "$?" 0
+  check "sphere view: well-formed, one polygon per face" equals "$(svg_polygons sph.svg)" \
+    "$(awk '!/^#/ && NF' "$MESHES/sphere.off" | sed -n 2p | awk '{ print $2 }')"
+  check "sphere convergence plot: well-formed" equals "$(svg_polygons sph_conv.svg 2>&1)" 0
+else
+  echo "skip: pictures (no python3 to parse XML and decode PNG)"
+fi
+
+# --- progress ------------------------------------------------------------------
+"$DLF" disk "$NEF" > progress.out 2>&1
+check "progress, not a terminal: one plain line per iteration" equals "$(grep -c '^  iteration ' progress.out)" \
+  "$(grep '^  iterations ' progress.out | awk '{ print $2 }')"
+check "progress line: step, residual, d_area, elapsed" \
+  grep -Eq '^  iteration +1  step [0-9.e+-]+ +residual [0-9.e+-]+ +d_area [0-9.]+  elapsed [0-9.]+ s$' progress.out
+check "progress, not a terminal: no carriage return" bash -c "! grep -q $'\r' progress.out"
+"$DLF" disk "$NEF" -v > verbose_progress.out 2>&1
+check "--verbose: details on every progress line" equals "$(grep -c '^  iteration .* critical .* backtracks ' verbose_progress.out)" \
+  "$(grep '^  iterations ' verbose_progress.out | awk '{ print $2 }')"
+if command -v script > /dev/null; then
+  script -qec "'$DLF' disk '$NEF'" /dev/null > tty.out 2>&1
+  check "progress on a terminal: rewritten in place" bash -c "grep -q $'\r\e\\[K  iteration ' tty.out && [ \$(grep -c '^  iteration ' tty.out) -le 1 ]"
+fi
+
+# --- dlf info ------------------------------------------------------------------
+info_fits() { "$DLF" info "$1" | awk '/^  fits / { sub(/^  fits +/, ""); print; exit }'; }
+check "info: a disk fits dlf disk" equals "$(info_fits "$NEF")" "dlf disk (a topological disk)"
+check "info: a closed genus-0 mesh fits dlf sphere" equals "$(info_fits "$MESHES/sphere.off")" "dlf sphere (closed, genus 0)"
+check "info: a torus fits neither, genus 1" bash -c "'$DLF' info '$MESHES/pipe.off' | grep -q 'genus 1 (cut it open'"
+check "info: quads are named" bash -c "'$DLF' info '$MESHES/quad.off' | grep -q 'not a triangle (triangulate)'"
+# two triangles sharing one vertex (a bow tie), a zero-area triangle apart
+printf 'OFF\n8 3 0\n0 0 0\n1 0 0\n0 1 0\n-1 0 0\n0 -1 0\n5 5 5\n6 6 6\n7 7 7\n3 0 1 2\n3 0 3 4\n3 5 6 7\n' > bowtie.off
+"$DLF" info bowtie.off --report bowtie.json > bowtie.out
+check "info: exit 0 on a mesh no command takes" equals "$?" 0
+check "info: the bow tie's vertex is non-manifold" equals "$(json_get bowtie.json "" non_manifold_vertices)" 1
+check "info: the collinear triangle has zero area" equals "$(json_get bowtie.json "" zero_area_faces)" 1
+check "info: 2 components, Euler characteristic 8 - 9 + 3" equals \
+  "$(json_get bowtie.json "" connected_components) $(json_get bowtie.json "" euler_characteristic)" "2 2"
+check "info: fits none, with the reasons" grep -q 'neither dlf disk nor dlf sphere: not manifold (repair it); 1 zero-area face' bowtie.out
+check "info: report says fits none" equals "$(json_get bowtie.json "" fits)" none
+"$DLF" info "$MESHES/lion-head.off" --report lion_info.json -q
+check "info: lion-head's numbers" equals "$(json_get lion_info.json "" faces) $(json_get lion_info.json "" border_loops) $(json_get lion_info.json "" genus)" "16674 1 0"
+check "info --help" bash -c "'$DLF' info --help | grep -q 'Usage: dlf info'"
+
 # --- error paths: non-zero exit, one line on stderr, no output file -----------
 echo "this is not a mesh" > garbage.off
 head -c 2000 /dev/zero | tr '\0' 'x' > garbage.obj
@@ -192,8 +306,12 @@ cp "$NEF" input.off
 expect_error() { # expect_error DESCRIPTION EXPECTED_CODE MESSAGE_PATTERN ARGS...
   local what=$1 code=$2 pattern=$3; shift 3
   rm -rf out; mkdir out
-  local outputs=(-o out/o.obj --report out/r.json --svg out/l.svg --domain-mesh out/d.obj)
-  [ "$1" = sphere ] && outputs=(-o out/o.obj --report out/r.json)
+  local outputs=(-o out/o.obj --report out/r.json --svg out/l.svg --domain-mesh out/d.obj
+                 --plot-convergence out/c.svg --plot-histogram out/h.svg --texture out/t.obj)
+  [ "$1" = sphere ] && outputs=(-o out/o.obj --report out/r.json --svg out/s.svg --plot-convergence out/c.svg)
+  [ "$1" = info ] && outputs=(--report out/r.json)
+  # OUTPUTS="...": these outputs instead (for errors about the outputs themselves)
+  [ -n "${OUTPUTS+set}" ] && read -r -a outputs <<< "$OUTPUTS"
   "$DLF" "$@" "${outputs[@]}" > out.txt 2> err.txt
   local rc=$?
   checks=$((checks + 1))
@@ -221,6 +339,24 @@ expect_error "missing INPUT" 1 "missing INPUT" disk
 expect_error "unknown command" 1 "unknown command" frobnicate input.off
 expect_error "sphere: torus refused" 1 "genus" sphere "$MESHES/pipe.off"
 expect_error "sphere: open mesh refused" 1 "ERROR_NOT_GENUS_0" sphere "$NEF"
+
+OUTPUTS="-o out/o.obj --svg out/l.svg" expect_error "--texture not an .obj" 1 "ending in .obj" disk input.off --texture out/t.png
+expect_error "--texture-size too small" 1 "--texture-size must be in" disk input.off --texture-size 8
+OUTPUTS="-o out/o.obj --svg out/l.svg" expect_error "--texture-size without --texture" 1 "applies to --texture only" \
+  disk input.off --texture-size 64
+OUTPUTS="-o out/o.obj" expect_error "--texture PNG and --plot-histogram into one file" 1 "name the same file" \
+  disk input.off --texture out/x.obj --plot-histogram out/x.png
+expect_error "info: missing file" 1 "cannot open" info no_such_mesh.off
+expect_error "info: garbage" 1 "cannot read" info garbage.off
+expect_error "info: two meshes" 1 "exactly one MESH" info input.off input.off
+expect_error "sphere: --svg on a torus" 1 "genus" sphere "$MESHES/pipe.off"
+# a disk with a zero-area triangle: the parameterizer refuses it
+printf 'OFF\n4 3 0\n0 0 0\n1 0 0\n2 0 0\n1 1 0\n3 0 1 3\n3 1 2 3\n3 0 2 1\n' > degenerate.off
+OUTPUTS="-o out/o.obj --svg out/l.svg --domain-mesh out/d.obj --plot-convergence out/c.svg --plot-histogram out/h.svg --texture out/t.obj" \
+  expect_error "parameterizer error: no picture" 1 "ERROR_DEGENERATE_INPUT" disk degenerate.off
+"$DLF" disk degenerate.off --svg degenerate.svg --texture degenerate_tex.obj --report degenerate.json > /dev/null 2>&1
+check "parameterizer error: only the report is written" bash -c "[ -s degenerate.json ] && [ ! -e degenerate.svg ] && ! ls degenerate_tex.* > /dev/null 2>&1"
+check "info names the zero-area face" bash -c "'$DLF' info degenerate.off | grep -q '1 zero-area face (the flow refuses them)'"
 
 expect_error "--density: wrong count" 1 "9 values; expected $NF (one per face) or $NV (one per vertex)" disk input.off --density short.rho
 expect_error "--density: zero" 1 "line 6: the density of face 4 is 0" disk input.off --density zero.rho

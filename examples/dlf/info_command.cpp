@@ -209,17 +209,22 @@ Mesh_info analyse(const std::vector<Point_3>& points, const std::vector<Polygon>
   return m;
 }
 
+std::string count(std::size_t n, const std::string& one, const std::string& many)
+{
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
 // The command that fits, or why none does.
 std::string verdict(const Mesh_info& m, std::string& reason)
 {
   std::vector<std::string> problems;
-  if(m.triangles != m.faces) problems.push_back(std::to_string(m.faces - m.triangles) + " faces are not triangles (triangulate)");
-  if(m.unreferenced) problems.push_back(std::to_string(m.unreferenced) + " unreferenced vertices (remove them)");
-  if(m.non_finite) problems.push_back(std::to_string(m.non_finite) + " vertices with non-finite coordinates");
-  if(m.repeated_vertex_faces) problems.push_back(std::to_string(m.repeated_vertex_faces) + " faces repeat a vertex");
+  if(m.triangles != m.faces) problems.push_back(count(m.faces - m.triangles, "face", "faces") + " not a triangle (triangulate)");
+  if(m.unreferenced) problems.push_back(count(m.unreferenced, "unreferenced vertex", "unreferenced vertices") + " (remove them)");
+  if(m.non_finite) problems.push_back(count(m.non_finite, "vertex", "vertices") + " with non-finite coordinates");
+  if(m.repeated_vertex_faces) problems.push_back(count(m.repeated_vertex_faces, "face", "faces") + " repeating a vertex");
   if(!m.manifold()) problems.push_back("not manifold (repair it)");
-  if(m.zero_area_faces) problems.push_back(std::to_string(m.zero_area_faces) + " zero-area faces (the flow refuses them)");
-  if(m.components != 1) problems.push_back(std::to_string(m.components) + " connected components (keep one)");
+  if(m.zero_area_faces) problems.push_back(count(m.zero_area_faces, "zero-area face", "zero-area faces") + " (the flow refuses them)");
+  if(m.components != 1) problems.push_back(count(m.components, "connected component", "connected components") + " (keep one)");
   const long g = m.genus();
   const bool disk = m.components == 1 && m.border_loops == 1 && m.euler == 1;
   const bool sphere = m.components == 1 && m.border_loops == 0 && m.euler == 2;
@@ -227,9 +232,9 @@ std::string verdict(const Mesh_info& m, std::string& reason)
   if(problems.empty() && sphere) return "dlf sphere";
   if(problems.empty()) {
     if(m.border_loops == 0) problems.push_back("closed surface of genus " + std::to_string(g) + " (cut it open into a disk)");
-    else if(g == 0) problems.push_back(std::to_string(m.border_loops) + " border loops (fill all holes but one)");
-    else problems.push_back("genus " + std::to_string(g) + " with " + std::to_string(m.border_loops) +
-                            " border loops (cut it into a disk)");
+    else if(g == 0) problems.push_back(count(m.border_loops, "border loop", "border loops") + " (fill all holes but one)");
+    else problems.push_back("genus " + std::to_string(g) + " with " + count(m.border_loops, "border loop", "border loops") +
+                            " (cut it into a disk)");
   }
   for(std::size_t k = 0; k < problems.size(); ++k) reason += (k ? "; " : "") + problems[k];
   return "none";
@@ -277,14 +282,14 @@ void print_info(std::ostream& out, const std::string& path, const Mesh_info& m, 
       << "  edges                 " << m.edges << " (" << m.border_edges << " border, " << m.non_manifold_edges
       << " non-manifold, " << m.misoriented_edges << " inconsistently oriented)\n"
       << "  connected components  " << m.components << "\n"
-      << "  border loops          " << m.border_loops << "\n"
+      << "  border loops          " << m.border_loops << (m.manifold() ? "" : " (connected sets of border edges)") << "\n"
       << "  Euler characteristic  " << m.euler << "\n"
       << "  genus                 " << (m.genus() >= 0 ? std::to_string(m.genus()) : std::string("n/a (not one manifold component)"))
       << "\n"
       << "  non-manifold vertices " << m.non_manifold_vertices << "\n"
       << "  degenerate faces      " << m.zero_area_faces << " zero area, " << m.repeated_vertex_faces << " repeating a vertex\n"
-      << "  smallest angle        " << m.min_angle_degrees << " degrees (" << m.faces_below_1_degree
-      << " faces below 1 degree)\n"
+      << "  smallest angle        " << m.min_angle_degrees << " degrees ("
+      << count(m.faces_below_1_degree, "face", "faces") << " below 1 degree)\n"
       << "  surface area          " << m.area << "\n"
       << "  bounding box          [" << m.lo[0] << ", " << m.hi[0] << "] x [" << m.lo[1] << ", " << m.hi[1] << "] x ["
       << m.lo[2] << ", " << m.hi[2] << "], diagonal " << diagonal << "\n";
