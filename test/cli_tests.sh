@@ -255,11 +255,13 @@ for l in open(sys.argv[1]):
   check "report: no history unless --history" bash -c "! grep -q '\"history\"' pic.json"
   "$DLF" disk "$NEF" --density face.rho --svg rho.svg -q
   check "layout SVG outlines the pieces of a piecewise-constant density" grep -q "density pieces" rho.svg
-  "$DLF" sphere "$MESHES/sphere.off" --svg sph.svg --plot-convergence sph_conv.svg -q
+  "$DLF" sphere "$MESHES/sphere.off" --svg sph.svg --plot-convergence sph_conv.svg --plot-histogram sph_hist.svg -q
   check "sphere view: exit 0" equals "$?" 0
   check "sphere view: well-formed, one polygon per face" equals "$(svg_polygons sph.svg)" \
     "$(awk '!/^#/ && NF' "$MESHES/sphere.off" | sed -n 2p | awk '{ print $2 }')"
   check "sphere convergence plot: well-formed" equals "$(svg_polygons sph_conv.svg 2>&1)" 0
+  check "sphere histogram: well-formed, the result only" bash -c \
+    "python3 -c 'import sys, xml.etree.ElementTree as ET; ET.parse(sys.argv[1])' sph_hist.svg && grep -q 'after the flow' sph_hist.svg && ! grep -q 'before the flow' sph_hist.svg"
 else
   echo "skip: pictures (no python3 to parse XML and decode PNG)"
 fi
@@ -308,7 +310,8 @@ expect_error() { # expect_error DESCRIPTION EXPECTED_CODE MESSAGE_PATTERN ARGS..
   rm -rf out; mkdir out
   local outputs=(-o out/o.obj --report out/r.json --svg out/l.svg --domain-mesh out/d.obj
                  --plot-convergence out/c.svg --plot-histogram out/h.svg --texture out/t.obj)
-  [ "$1" = sphere ] && outputs=(-o out/o.obj --report out/r.json --svg out/s.svg --plot-convergence out/c.svg)
+  [ "$1" = sphere ] && outputs=(-o out/o.obj --report out/r.json --svg out/s.svg --plot-convergence out/c.svg
+                                --plot-histogram out/h.svg)
   [ "$1" = info ] && outputs=(--report out/r.json)
   # OUTPUTS="...": these outputs instead (for errors about the outputs themselves)
   [ -n "${OUTPUTS+set}" ] && read -r -a outputs <<< "$OUTPUTS"

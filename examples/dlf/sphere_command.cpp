@@ -12,6 +12,7 @@
 #include "mesh_input.h"
 #include "output_files.h"
 #include "progress.h"
+#include "svg_common.h"
 #include "svg_plots.h"
 #include "svg_sphere.h"
 
@@ -56,7 +57,7 @@ const char* sphere_help =
 
 struct Sphere_settings
 {
-  std::string input, output, report, svg, convergence_svg;
+  std::string input, output, report, svg, convergence_svg, histogram_svg;
   SMP::Discrete_lie_flow_options options;
   Verbosity verbosity = Verbosity::NORMAL;
   bool history_in_report = false;
@@ -73,6 +74,8 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
      "draw the sphere from +z and from -z (orthographic), triangles coloured by area ratio")
     ("plot-convergence", po::value<std::string>(&s.convergence_svg)->value_name("PLOT.svg"),
      "plot d_area - 2 and the area residual per iteration (log scale)")
+    ("plot-histogram", po::value<std::string>(&s.histogram_svg)->value_name("PLOT.svg"),
+     "histogram of the per-face log area ratios of the result")
     ("tolerance", po::value<double>(&s.options.tolerance), "stop when d_area - 2 <= this (default 0.01)")
     ("max-iterations", po::value<std::size_t>(&s.options.max_iterations), "iteration cap (default 500)")
     ("mu", po::value<double>(&s.options.mu), "fraction of the critical step, in (0, 1) (default 0.8)")
@@ -121,6 +124,7 @@ int sphere_command(const std::vector<std::string>& args)
   if(!s.report.empty()) outputs.declare(s.report, "--report");
   if(!s.svg.empty()) outputs.declare(s.svg, "--svg");
   if(!s.convergence_svg.empty()) outputs.declare(s.convergence_svg, "--plot-convergence");
+  if(!s.histogram_svg.empty()) outputs.declare(s.histogram_svg, "--plot-histogram");
 
   const Indexed_mesh input = read_triangle_mesh(s.input);
   // A Surface_mesh in input order, so that vertex i is input vertex i.
@@ -162,12 +166,17 @@ int sphere_command(const std::vector<std::string>& args)
     });
   std::ostringstream caption;
   caption << "dlf sphere " << s.input << ": d_area " << std::setprecision(10) << R.final_metrics.d_area;
-  if(ok && !s.svg.empty()) {
-    std::vector<Vec3> points;
-    points.reserve(input.xyz.size());
+  std::vector<Vec3> points;
+  if(ok)
     for(Mesh::Vertex_index v : mesh.vertices()) points.push_back({{ sphere[v].x(), sphere[v].y(), sphere[v].z() }});
+  if(ok && !s.svg.empty())
     outputs.write(s.svg, [&](std::ostream& o) { write_svg_sphere(o, input, points, caption.str()); });
-  }
+  // The initial map is not kept by the library: the result only.
+  if(ok && !s.histogram_svg.empty())
+    outputs.write(s.histogram_svg, [&](std::ostream& o) {
+      write_log_ratio_histogram(o, std::vector<double>(), face_log_area_ratios(input, points, std::vector<double>()),
+                                false, caption.str());
+    });
   if(ok && !s.convergence_svg.empty())
     outputs.write(s.convergence_svg, [&](std::ostream& o) {
       write_convergence_plot(o, R.history, R.initial_d_area, s.options.tolerance, caption.str());
