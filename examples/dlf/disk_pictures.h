@@ -13,6 +13,7 @@
 #include "disk_run.h"
 #include "output_files.h"
 
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>

@@ -64,10 +64,10 @@ std::vector<double> log_ratios(const Indexed_mesh& mesh, const std::vector<Point
   return out;
 }
 
-} // namespace
-
 const double svg_clamp_log = std::log(4.);
 const double svg_bar_width = 24;
+
+} // namespace
 
 const std::string& colour_of_log_ratio(double log_ratio)
 {

@@ -15,12 +15,8 @@
 
 namespace dlf_cli {
 
-/// The colour scale saturates at a factor 4 either way.
-extern const double svg_clamp_log;
-extern const double svg_bar_width;
-
 /// White at ratio 1, blue where the domain is too small, red where it is too
-/// large, as "#rrggbb".
+/// large, saturated at a factor 4 either way, as "#rrggbb".
 const std::string& colour_of_log_ratio(double log_ratio);
 
 std::string xml_escape(const std::string& s);
