@@ -4,17 +4,23 @@
 #include "mesh_input.h"
 #include "cli_error.h"
 
+#include <CGAL/IO/OFF.h>
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
+#include <iterator>
+#include <locale>
 #include <map>
 #include <numeric>
 #include <sstream>
+#include <stdexcept>
 #include <utility>
 
 namespace dlf_cli {
@@ -61,6 +67,177 @@ void check_referenced(std::size_t n, const std::vector<Polygon>& polygons, const
   throw Cli_error(s.str());
 }
 
+bool has_off_extension(const std::string& path)
+{
+  if(path.size() < 4) return false;
+  std::string ext = path.substr(path.size() - 4);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext == ".off";
+}
+
+// OFF files are read here rather than by CGAL's reader, which a small
+// malformed file makes misbehave (findings of fuzz/dlf_fuzz.cpp, CGAL 5.5):
+//  - it resizes its arrays to the header's counts, and a face to the count
+//    at the start of its line, before reading them, so "OFF 2000000000
+//    2000000000 0" asks for ~100 GB; a negative face size is converted from
+//    double to std::size_t (UB, then std::length_error);
+//  - it reads colours, texture coordinates and normals past the values of a
+//    line that has fewer numbers than the header announces (heap reads out
+//    of bounds, an uninitialised index for textures), and converts
+//    out-of-range colours to unsigned char (UB).
+// The text format is parsed with CGAL's conventions (header keyword
+// [ST][C][N][4][n]OFF, '#' comments, one vertex or face per line, extra
+// numbers on a line ignored: the tool needs no colours, normals or texture
+// coordinates); binary OFF goes to CGAL's reader after the counts are checked
+// against the file's size. Returns false when the file is not valid OFF.
+class Off_text_reader
+{
+public:
+  explicit Off_text_reader(const std::string& text) : m_text(text) {}
+
+  bool read(const std::string& path, std::vector<Point_3>& points, std::vector<Polygon>& polygons)
+  {
+    skip_blanks_and_comments();
+    const std::string keyword = word();
+    std::size_t j = 0;
+    if(keyword.compare(0, 2, "ST") == 0) j += 2;
+    if(j < keyword.size() && keyword[j] == 'C') ++j;
+    if(j < keyword.size() && keyword[j] == 'N') ++j;
+    const bool homogeneous = j < keyword.size() && keyword[j] == '4';
+    if(homogeneous) ++j;
+    const bool dimensional = j < keyword.size() && keyword[j] == 'n';
+    if(dimensional) ++j;
+    if(keyword.compare(j, std::string::npos, "OFF") != 0) return false;
+    skip_blanks_and_comments();
+    if(m_text.compare(m_pos, 6, "BINARY") == 0) return read_binary(path, dimensional, points, polygons);
+
+    long long dimension = 3, nv = -1, nf = -1, ne = -1;
+    if(dimensional && !integer(dimension)) return false;
+    if(dimension != 3 || !integer(nv) || !integer(nf) || !integer(ne) || nv < 0 || nf < 0) return false;
+    // A vertex line takes at least 6 bytes ("0 0 0\n"), a face line 2.
+    check_counts(path, nv, nf, 6. * double(nv) + 2. * double(nf));
+
+    points.reserve(std::size_t(nv));
+    std::vector<double> values;
+    for(long long i = 0; i < nv; ++i) {
+      if(!line(values) || values.size() < (homogeneous ? 4u : 3u)) return false;
+      const double w = homogeneous ? values[3] : 1.;
+      if(w == 0) return false;
+      points.push_back(Point_3(values[0] / w, values[1] / w, values[2] / w));
+    }
+    polygons.reserve(std::size_t(nf));
+    for(long long f = 0; f < nf; ++f) {
+      if(!line(values) || values.empty()) return false;
+      // The size, then as many vertex indices; what follows (a colour) is ignored.
+      const double k = values[0];
+      if(!(k >= 0 && k < double(values.size())) || k != std::floor(k)) return false;
+      Polygon polygon(static_cast<std::size_t>(k));
+      for(std::size_t c = 0; c < polygon.size(); ++c) {
+        const double i = values[c + 1];
+        if(!(i >= 0 && i < double(nv)) || i != std::floor(i)) return false;
+        polygon[c] = static_cast<std::size_t>(i);
+      }
+      polygons.push_back(polygon);
+    }
+    return true;
+  }
+
+private:
+  void skip_blanks_and_comments()
+  {
+    for(;;) {
+      while(m_pos < m_text.size() && std::isspace(static_cast<unsigned char>(m_text[m_pos]))) ++m_pos;
+      if(m_pos >= m_text.size() || m_text[m_pos] != '#') return;
+      m_pos = (std::min)(m_text.find('\n', m_pos), m_text.size());
+    }
+  }
+
+  std::string word()
+  {
+    const std::size_t start = m_pos;
+    while(m_pos < m_text.size() && std::isalnum(static_cast<unsigned char>(m_text[m_pos]))) ++m_pos;
+    return m_text.substr(start, m_pos - start);
+  }
+
+  bool integer(long long& n)
+  {
+    skip_blanks_and_comments();
+    std::size_t end = m_pos;
+    if(end < m_text.size() && (m_text[end] == '-' || m_text[end] == '+')) ++end;
+    const std::size_t digits = end;
+    while(end < m_text.size() && std::isdigit(static_cast<unsigned char>(m_text[end]))) ++end;
+    if(end == digits) return false;
+    // More than 18 digits cannot be a count that fits in memory: saturate.
+    n = end - digits > 18 ? 999999999999999999LL : std::stoll(m_text.substr(digits, end - digits));
+    if(m_text[m_pos] == '-') n = -n;
+    m_pos = end;
+    return true;
+  }
+
+  // The numbers of the next line that is neither blank nor a comment, up to
+  // a '#' or the first token that is not a number.
+  bool line(std::vector<double>& values)
+  {
+    skip_blanks_and_comments();
+    if(m_pos >= m_text.size()) return false;
+    const std::size_t end = (std::min)(m_text.find('\n', m_pos), m_text.size());
+    std::string l = m_text.substr(m_pos, end - m_pos);
+    m_pos = end;
+    l = l.substr(0, l.find('#'));
+    std::istringstream in(l);
+    in.imbue(std::locale::classic());
+    values.clear();
+    double x;
+    while(in >> x) values.push_back(x);
+    return true;
+  }
+
+  bool read_binary(const std::string& path, bool dimensional, std::vector<Point_3>& points,
+                   std::vector<Polygon>& polygons)
+  {
+    // The counts are big-endian 32-bit integers after the header line.
+    std::size_t at = m_text.find('\n', m_pos);
+    if(at == std::string::npos) return false;
+    ++at;
+    long long counts[4] = { 0, 0, 0, 0 };
+    const int n = dimensional ? 4 : 3;
+    if(m_text.size() < at + 4 * std::size_t(n)) return false;
+    for(int k = 0; k < n; ++k) {
+      std::uint32_t u = 0;
+      for(int b = 0; b < 4; ++b) u = (u << 8) | static_cast<unsigned char>(m_text[at + 4 * std::size_t(k) + std::size_t(b)]);
+      counts[k] = static_cast<std::int32_t>(u);
+    }
+    const long long nv = counts[dimensional ? 1 : 0], nf = counts[dimensional ? 2 : 1];
+    if(nv < 0 || nf < 0) return false;
+    // A vertex takes at least 12 bytes (three floats), a face 4 (its size).
+    check_counts(path, nv, nf, 12. * double(nv) + 4. * double(nf));
+    std::istringstream in(m_text, std::ios::binary);
+    try {
+      return CGAL::IO::read_OFF(in, points, polygons);
+    } catch(const std::length_error&) { // a negative face size, read as std::size_t
+      return false;
+    }
+  }
+
+  void check_counts(const std::string& path, long long nv, long long nf, double bytes) const
+  {
+    if(bytes > double(m_text.size()))
+      throw Cli_error(quoted(path) + ": the header announces " + std::to_string(nv) + " vertices and " +
+                      std::to_string(nf) + " faces, more than the file's " + std::to_string(m_text.size()) +
+                      " bytes can hold");
+  }
+
+  const std::string& m_text;
+  std::size_t m_pos = 0;
+};
+
+bool read_off_soup(const std::string& path, std::vector<Point_3>& points, std::vector<Polygon>& polygons)
+{
+  std::ifstream in(path, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return Off_text_reader(text).read(path, points, polygons);
+}
+
 // A tiny union-find over vertex indices, for counting connected components.
 struct Union_find
 {
@@ -86,7 +263,7 @@ Indexed_mesh read_triangle_mesh(const std::string& path)
   // The soup reader, not PMP::IO::read_polygon_mesh(): the latter's repair
   // step merges duplicate points and drops isolated ones, which renumbers
   // vertices, and every output of the tool must keep the input's numbering.
-  if(!CGAL::IO::read_polygon_soup(path, points, polygons))
+  if(!(has_off_extension(path) ? read_off_soup(path, points, polygons) : CGAL::IO::read_polygon_soup(path, points, polygons)))
     throw Cli_error(quoted(path) + ": cannot read as a mesh (CGAL reads .off, .obj, .ply, .stl, .ts, .vtp)");
   if(polygons.empty())
     throw Cli_error(quoted(path) + ": the mesh has no faces");
