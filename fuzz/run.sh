@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer target fuzz/dlf_fuzz.cpp (clang, ASan + UBSan) into
+# build-fuzz/ and runs it for SECONDS on one core at the lowest priority,
+# starting from fuzz/seeds/ and the corpus kept in build-fuzz/corpus/.
+# Crashes, timeouts and leaks land in build-fuzz/artifacts/; replay one with
+#   build-fuzz/dlf_fuzz build-fuzz/artifacts/crash-...
+#   bash fuzz/run.sh 600          # ten minutes
+#   bash fuzz/run.sh 0            # build only
+# Needs clang and libclang-rt (Debian: apt-get install clang libclang-rt-14-dev).
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+SECONDS_TO_RUN="${1:-60}"
+BUILD_DIR="${FUZZ_BUILD_DIR:-build-fuzz}"
+CXX="${FUZZ_CXX:-$(command -v clang++ || command -v clang++-14)}"
+mkdir -p "$BUILD_DIR/obj" "$BUILD_DIR/corpus" "$BUILD_DIR/artifacts" "$BUILD_DIR/tmp"
+
+# CGAL and Eigen keep their assertions (no NDEBUG): a violated precondition
+# is a finding too. Undefined behaviour aborts (halt_on_error), except what
+# fuzz/ubsan.supp lists in third-party headers, which needs the check to be
+# recoverable. The default SPD solver (Eigen's) avoids linking CHOLMOD.
+flags=(-std=c++17 -O1 -g -fno-omit-frame-pointer
+       -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
+       -fsanitize-recover=float-cast-overflow
+       -Iinclude -Iexamples/dlf -isystem /usr/include/eigen3 -DCGAL_EIGEN3_ENABLED)
+sources=(fuzz/dlf_fuzz.cpp examples/dlf/mesh_input.cpp)
+# Changed flags rebuild everything.
+if [[ "$(cat "$BUILD_DIR/flags" 2>/dev/null)" != "$CXX ${flags[*]}" ]]; then
+  rm -f "$BUILD_DIR"/obj/*.o
+  echo "$CXX ${flags[*]}" >"$BUILD_DIR/flags"
+fi
+objects=()
+for src in "${sources[@]}"; do
+  obj="$BUILD_DIR/obj/$(basename "$src" .cpp).o"
+  objects+=("$obj")
+  # Rebuild when the source or any project header is newer than the object.
+  if [[ ! -f "$obj" || -n "$(find "$src" include examples/dlf -newer "$obj" \( -name '*.h' -o -path "$src" \) | head -1)" ]]; then
+    echo "fuzz: compiling $src"
+    nice -n 19 "$CXX" "${flags[@]}" -c "$src" -o "$obj"
+  fi
+done
+if [[ ! -x "$BUILD_DIR/dlf_fuzz" || -n "$(find "${objects[@]}" -newer "$BUILD_DIR/dlf_fuzz" | head -1)" ]]; then
+  "$CXX" "${flags[@]}" "${objects[@]}" -lgmp -lmpfr -o "$BUILD_DIR/dlf_fuzz"
+fi
+[[ "$SECONDS_TO_RUN" -gt 0 ]] || exit 0
+
+# One fuzzing process at a time (-fork=1: a child that dies is replaced and
+# its input kept in artifacts/, so one run reports every finding); the
+# machines this runs on are shared.
+export TMPDIR="$PWD/$BUILD_DIR/tmp"
+export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=1}"
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1:suppressions=$PWD/fuzz/ubsan.supp}"
+set +e
+nice -n 19 "$BUILD_DIR/dlf_fuzz" -max_total_time="$SECONDS_TO_RUN" -timeout=20 -rss_limit_mb=2048 \
+  -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
+  -max_len=8192 -dict=fuzz/mesh.dict -artifact_prefix="$BUILD_DIR/artifacts/" -print_final_stats=1 \
+  "$BUILD_DIR/corpus" fuzz/seeds 2>&1 | tee "$BUILD_DIR/last_run.log" | grep -E '^#[0-9]+: |crash|ERROR|SUMMARY|Test unit written|INFO: exiting'
+status=${PIPESTATUS[0]}
+set -e
+echo "fuzz: exit $status; log $BUILD_DIR/last_run.log; $(ls "$BUILD_DIR/artifacts" | wc -l) artifacts in $BUILD_DIR/artifacts/"
+exit "$status"
