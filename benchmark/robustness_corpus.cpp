@@ -401,6 +401,22 @@ std::vector<Case> make_corpus(const std::string& data)
     c.api_variant = k; c.text = off_text(nef);
     C.push_back(c);
   }
+  // Exact-certification ablation: a cap whose 3D height is far below the
+  // rounding level of the map's coordinates (grid8 moved so that the cap's
+  // base midpoint is the origin, where 1e-30 is representable), with an
+  // initial map that already has the cap at the rounding level.
+  for(double eps : { 1e-20, 1e-30 }) {
+    Mesh x = g;
+    const int v = interior_vertex(x);
+    const std::pair<int, int> bc = others(x.F[std::size_t(star(x, v)[0])], v);
+    const P3 mid = lerp(x.V[std::size_t(bc.first)], x.V[std::size_t(bc.second)], 0.5);
+    for(P3& p : x.V) for(int i = 0; i < 3; ++i) p[std::size_t(i)] -= mid[std::size_t(i)];
+    for(double& q : x.V[std::size_t(v)]) q *= eps;
+    Case c;
+    c.cls = "rounding_level_sliver"; c.name = "grid8_cap_origin_eps" + num(eps); c.kind = "api";
+    c.api_variant = 6; c.text = off_text(x);
+    C.push_back(c);
+  }
   return C;
 }
 
@@ -700,9 +716,44 @@ struct Spoiled_tutte
     case 2: for(vertex_descriptor v : vertices(sm)) put(uvmap, v, Point_2(0.25, 0.25)); break;
     case 3: put(uvmap, a, Point_2(std::nan(""), 0)); break;
     case 4: for(vertex_descriptor v : vertices(sm)) { const Point_2 p = get(uvmap, v); put(uvmap, v, Point_2(p.x(), -p.y())); } break;
+    case 6: sliver_at_rounding_level(sm, uvmap); break;
     default: break;
     }
     return SMP::OK;
+  }
+
+  // The face of smallest 3D area (a cap) gets the same shape in the map: its
+  // apex goes onto the midpoint of the opposite uv edge, then a few ulps off
+  // it, to the first double where the exact predicate calls it positive. Its
+  // area is then at the rounding level of the coordinates, the one place
+  // where the doubles' sign of an area and the exact sign can differ.
+  template <class VertexUVmap>
+  static void sliver_at_rounding_level(SM& sm, VertexUVmap uvmap)
+  {
+    SM::Face_index smallest;
+    double best = HUGE_VAL;
+    for(SM::Face_index f : faces(sm)) {
+      const halfedge_descriptor h = halfedge(f, sm);
+      const double a = std::sqrt(CGAL::squared_area(sm.point(source(h, sm)), sm.point(target(h, sm)), sm.point(target(next(h, sm), sm))));
+      if(a < best) { best = a; smallest = f; }
+    }
+    // apex: the corner opposite the longest 3D edge
+    halfedge_descriptor h = halfedge(smallest, sm), longest = h;
+    for(int k = 0; k < 3; ++k, h = next(h, sm))
+      if(CGAL::squared_distance(sm.point(source(h, sm)), sm.point(target(h, sm))) >
+         CGAL::squared_distance(sm.point(source(longest, sm)), sm.point(target(longest, sm)))) longest = h;
+    const vertex_descriptor b = source(longest, sm), c = target(longest, sm), apex = target(next(longest, sm), sm);
+    if(CGAL::is_border(apex, sm)) return;
+    const Point_2 pb = get(uvmap, b), pc = get(uvmap, c);
+    double x = 0.5 * (pb.x() + pc.x()), y = 0.5 * (pb.y() + pc.y());
+    // normal pointing to the positive side of (b, c, apex)
+    const double nx = -(pc.y() - pb.y()), ny = pc.x() - pb.x();
+    for(int k = 0; k < 64; ++k) {
+      if(CGAL::orientation(EK::Point_2(pb.x(), pb.y()), EK::Point_2(pc.x(), pc.y()), EK::Point_2(x, y)) == CGAL::POSITIVE) break;
+      x = std::nextafter(x, nx > 0 ? HUGE_VAL : -HUGE_VAL);
+      y = std::nextafter(y, ny > 0 ? HUGE_VAL : -HUGE_VAL);
+    }
+    put(uvmap, apex, Point_2(x, y));
   }
 };
 
@@ -716,6 +767,8 @@ json run_api(const Case& c, const std::string& file)
   Spoiled_tutte init;
   init.variant = c.api_variant;
   SMP::Discrete_lie_flow_parameterizer_3<SM, Spoiled_tutte> dlf(init);
+  // The rounding-level sliver only matters once the flow pushes it; run to the plateau.
+  if(c.api_variant == 6) dlf.options().tolerance = 0;
   const SMP::Error_code e = SMP::parameterize(sm, dlf, bhd, uv);
   const SMP::Discrete_lie_flow_report& R = dlf.report();
   json r = { { "status", SMP::discrete_lie_flow_error_name(e) }, { "message", R.message },
