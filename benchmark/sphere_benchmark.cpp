@@ -1,0 +1,480 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Benchmark of the spherical Discrete Lie Flow
+// (Discrete_lie_flow_sphere_parameterizer_3, default options) on the closed
+// genus-0 triangle meshes of CGAL's data set, plus a "large" section of
+// Loop-subdivided copies (bear.off+loop1, 110K faces, is the row of the
+// speed goal: a 100K-face closed mesh in under 10 s).
+//
+// One row per mesh: seconds (initial map, flow, whole call), iterations, stop
+// reason, D_area at the start and the end, mean and max |log area ratio|,
+// inverted faces, and whether the row meets the goals. Inverted faces are
+// counted here with CGAL's exact orientation(ORIGIN, p, q, r) on the points
+// the call wrote, not taken from the report.
+//
+// Output: a summary on stdout, --json (all numbers) and --markdown (the
+// tables, written into doc/sphere_benchmark.md by benchmark/sphere.sh).
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/subdivision_method_3.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_sphere_3.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/distortion.h>
+
+#include <boost/program_options.hpp>
+#include <nlohmann/json.hpp>
+
+#include <time.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#ifndef DLF_DATA_DIR
+#define DLF_DATA_DIR "build/data"
+#endif
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+namespace D = CGAL::Surface_mesh_parameterization::internal::dlf;
+namespace PMP = CGAL::Polygon_mesh_processing;
+namespace fs = std::filesystem;
+namespace po = boost::program_options;
+using json = nlohmann::ordered_json;
+
+typedef CGAL::Simple_cartesian<double> K;
+typedef CGAL::Surface_mesh<K::Point_3> SM;
+typedef boost::graph_traits<SM>::vertex_descriptor vertex_descriptor;
+typedef boost::graph_traits<SM>::face_descriptor face_descriptor;
+typedef SM::Property_map<SM::Vertex_index, K::Point_3> Sphere_map;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+
+// The goals of the issue: a row is "ok" when all of these hold.
+static const double goal_d_area = 2.01;        // final D_area (optimum 2)
+static const double goal_log_area_mean = 0.02; // final mean |log(area ratio)|
+static const double goal_speed_seconds = 10;   // whole call on the 100K-face speed mesh
+static const std::size_t min_faces = 200;      // smaller meshes time nothing but overhead
+
+// ---------------------------------------------------------------------------
+// Small utilities
+// ---------------------------------------------------------------------------
+
+typedef std::chrono::steady_clock Clock;
+static double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+/// CPU time of the process (all threads): less sensitive than wall time to
+/// the other jobs of a shared machine.
+static double cpu_now()
+{
+  timespec ts;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+static std::string fmt(double x, int prec = 3)
+{
+  if(!std::isfinite(x)) return "nan";
+  std::ostringstream s;
+  const double a = std::abs(x);
+  if(a != 0 && (a < 1e-3 || a >= 1e6)) s << std::setprecision(prec) << x;
+  else s << std::fixed << std::setprecision(prec) << x;
+  return s.str();
+}
+static std::string fmt_time(double t)
+{
+  std::ostringstream s;
+  s << std::setprecision(3) << t;
+  return s.str();
+}
+static std::string loadavg()
+{
+  std::ifstream in("/proc/loadavg");
+  std::string a, b, c;
+  in >> a >> b >> c;
+  return a + " " + b + " " + c;
+}
+static std::vector<std::string> split(const std::string& s, char sep = ',')
+{
+  std::vector<std::string> out;
+  std::string cur;
+  for(char c : s) {
+    if(c == sep) { if(!cur.empty()) out.push_back(cur); cur.clear(); }
+    else if(c != ' ') cur += c;
+  }
+  if(!cur.empty()) out.push_back(cur);
+  return out;
+}
+
+// ---------------------------------------------------------------------------
+// Meshes
+// ---------------------------------------------------------------------------
+
+/// Why `mesh` is not a closed, connected, genus-0 triangle mesh ("" when it is).
+static std::string not_a_sphere(SM& mesh) // non-const: a temporary face property
+{
+  if(faces(mesh).empty()) return "empty";
+  if(!CGAL::is_triangle_mesh(mesh)) return "not a triangle mesh";
+  if(!CGAL::is_closed(mesh)) return "not closed";
+  SM::Property_map<face_descriptor, std::size_t> cc = mesh.add_property_map<face_descriptor, std::size_t>("f:bench_cc", 0).first;
+  const std::size_t components = PMP::connected_components(mesh, cc);
+  mesh.remove_property_map(cc);
+  if(components != 1) return std::to_string(components) + " connected components";
+  // Closed and connected: genus 0 iff the Euler characteristic is 2.
+  const long chi = long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh));
+  if(chi != 2) return "Euler characteristic " + std::to_string(chi);
+  return "";
+}
+
+/// Reads `spec` ("name.off", or "name.off+loopK" for K steps of Loop
+/// subdivision) from `dir`; on false, `why` says what disqualifies it.
+static bool load_mesh(const std::string& spec, const fs::path& dir, SM& mesh, std::string& why)
+{
+  std::string file = spec;
+  int loops = 0;
+  const std::size_t plus = spec.find("+loop");
+  if(plus != std::string::npos) {
+    file = spec.substr(0, plus);
+    loops = std::atoi(spec.c_str() + plus + 5);
+  }
+  try {
+    // The reader of the tests: it repairs polygon soups (duplicate points,
+    // orientation) before building the mesh.
+    if(!PMP::IO::read_polygon_mesh((dir / file).string(), mesh)) { why = "cannot read " + file; return false; }
+    why = not_a_sphere(mesh);
+    if(!why.empty()) return false;
+    if(loops > 0) {
+      CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(loops));
+      why = not_a_sphere(mesh);
+    }
+  } catch(const std::exception& e) {
+    why = "cannot read " + file + ": " + e.what();
+  }
+  return why.empty();
+}
+
+// ---------------------------------------------------------------------------
+// One run
+// ---------------------------------------------------------------------------
+
+static json metrics_json(const D::Distortion_metrics& d)
+{
+  json j;
+  j["d_area"] = d.d_area;
+  j["arap"] = d.arap;
+  j["symmetric_dirichlet"] = d.symmetric_dirichlet;
+  j["log_area_mean_abs"] = d.log_area_mean_abs;
+  j["log_area_max_abs"] = d.log_area_max_abs;
+  j["log_area_rms"] = d.log_area_rms;
+  j["inverted_faces"] = d.inverted_faces;
+  j["degenerate_faces"] = d.degenerate_faces;
+  j["min_angle_degrees"] = d.min_angle_degrees;
+  j["faces_below_1_degree"] = d.faces_below_1_degree;
+  return j;
+}
+
+/// Runs the spherical DLF with default options on `mesh` and checks its
+/// output; failures (an error code or an exception) become rows too.
+static json run_sphere(const SM& mesh)
+{
+  json j;
+  SMP::Discrete_lie_flow_sphere_parameterizer_3<SM> dlf; // the library's defaults
+  SM m = mesh; // the property map is added to a copy: the input stays as read
+  Sphere_map sphere = m.add_property_map<SM::Vertex_index, K::Point_3>("v:sphere", K::Point_3(0, 0, 0)).first;
+  SMP::Error_code status = SMP::ERROR_WRONG_PARAMETER;
+  const double c0 = cpu_now();
+  const Clock::time_point t0 = Clock::now();
+  try {
+    status = dlf.parameterize(m, sphere);
+  } catch(const std::exception& e) {
+    j["status"] = "exception";
+    j["message"] = e.what();
+    j["seconds"] = seconds_since(t0);
+    j["cpu_seconds"] = cpu_now() - c0;
+    return j;
+  }
+  j["seconds"] = seconds_since(t0);
+  j["cpu_seconds"] = cpu_now() - c0;
+  const SMP::Discrete_lie_flow_sphere_report& R = dlf.report();
+  j["status"] = SMP::discrete_lie_flow_error_name(status);
+  j["message"] = R.message;
+  j["seconds_initial"] = R.seconds_initial;
+  j["seconds_flow"] = R.seconds_flow;
+  j["seconds_assembly"] = R.seconds_assembly;
+  j["seconds_solve"] = R.seconds_solve;
+  j["seconds_step"] = R.seconds_step;
+  j["iterations"] = R.iterations;
+  j["stop_reason"] = SMP::stop_reason_name(R.stop_reason);
+  j["initial_attempts"] = R.initial_attempts;
+  j["puncture_face"] = R.puncture_face;
+  j["initial_scale"] = R.initial_scale;
+  j["factorizations"] = R.factorizations;
+  j["symbolic_analyses"] = R.symbolic_analyses;
+  j["rejected_by_exact_check"] = R.rejected_by_exact_check;
+  j["report_initial_d_area"] = R.initial_d_area;
+  j["report_final_d_area"] = R.final_d_area;
+  j["report_final_residual"] = R.final_residual;
+  j["report_inverted_faces"] = R.inverted_faces;
+  j["report_degenerate_faces"] = R.degenerate_faces;
+  if(status != SMP::OK) return j;
+  j["initial"] = metrics_json(R.initial_metrics);
+  j["final"] = metrics_json(R.final_metrics);
+
+  // Our own check of the output: exact orientation of every face seen from
+  // the centre (positive = kept), and the distance of the points to the sphere.
+  std::size_t inverted = 0, degenerate = 0;
+  const Epick::Point_3 O(CGAL::ORIGIN);
+  auto to_epick = [&](vertex_descriptor v) { const K::Point_3& p = get(sphere, v); return Epick::Point_3(p.x(), p.y(), p.z()); };
+  for(face_descriptor f : faces(m)) {
+    const auto h = halfedge(f, m);
+    const CGAL::Orientation o = CGAL::orientation(O, to_epick(source(h, m)), to_epick(target(h, m)),
+                                                  to_epick(target(next(h, m), m)));
+    if(o == CGAL::NEGATIVE) ++inverted;
+    else if(o == CGAL::ZERO) ++degenerate;
+  }
+  double norm_error = 0;
+  for(vertex_descriptor v : vertices(m)) {
+    const K::Point_3& p = get(sphere, v);
+    const double n = std::sqrt(p.x() * p.x() + p.y() * p.y() + p.z() * p.z());
+    norm_error = std::isfinite(n) ? std::max(norm_error, std::abs(n - 1)) : HUGE_VAL;
+  }
+  j["inverted_faces"] = inverted;
+  j["degenerate_faces"] = degenerate;
+  j["max_norm_error"] = norm_error;
+  return j;
+}
+
+/// The goals of the issue that `r` misses (empty: it meets them all).
+static std::vector<std::string> missed_goals(const json& r)
+{
+  std::vector<std::string> missed;
+  if(r["status"] != "ok") return { "status" };
+  if(std::size_t(r["inverted_faces"]) + std::size_t(r["degenerate_faces"]) != 0) missed.push_back("inverted");
+  if(!(double(r["final"]["d_area"]) <= goal_d_area)) missed.push_back("d_area");
+  if(!(double(r["final"]["log_area_mean_abs"]) <= goal_log_area_mean)) missed.push_back("mean|log r|");
+  if(r["stop_reason"] != "converged") missed.push_back("stop");
+  return missed;
+}
+
+// ---------------------------------------------------------------------------
+// Markdown
+// ---------------------------------------------------------------------------
+
+static void table(std::ostream& out, const json& rows)
+{
+  out << "| mesh | faces | s initial | s flow | s total | iterations | stop | start D_area | final D_area"
+         " | mean \\|log r\\| | max \\|log r\\| | inverted | goals |\n"
+         "|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---|\n";
+  for(const json& m : rows) {
+    const json& r = m["run"];
+    out << "| " << std::string(m["mesh"]) << " | " << std::size_t(m["F"]) << " | ";
+    if(r["status"] != "ok") {
+      // a failed run: the status in place of the numbers
+      out << "- | - | " << fmt_time(r["seconds"]) << " | " << (r.contains("iterations") ? std::to_string(std::size_t(r["iterations"])) : "-")
+          << " | " << (r.contains("stop_reason") ? std::string(r["stop_reason"]) : "-") << " | - | - | - | - | - | **"
+          << std::string(r["status"]) << "** |\n";
+      continue;
+    }
+    std::string inverted = std::to_string(std::size_t(r["inverted_faces"]));
+    if(std::size_t(r["degenerate_faces"]) > 0) inverted += " (+" + std::to_string(std::size_t(r["degenerate_faces"])) + " degen.)";
+    const std::vector<std::string> missed = m["missed_goals"];
+    std::string goals = missed.empty() ? "yes" : "no:";
+    for(const std::string& g : missed) goals += " " + g;
+    out << fmt_time(r["seconds_initial"]) << " | " << fmt_time(r["seconds_flow"]) << " | " << fmt_time(r["seconds"]) << " | "
+        << std::size_t(r["iterations"]) << " | " << std::string(r["stop_reason"]) << " | "
+        << fmt(r["initial"]["d_area"], 4) << " | " << fmt(r["final"]["d_area"], 4) << " | "
+        << fmt(r["final"]["log_area_mean_abs"], 4) << " | " << fmt(r["final"]["log_area_max_abs"], 3) << " | "
+        << inverted << " | " << goals << " |\n";
+  }
+  out << "\n";
+}
+
+// ---------------------------------------------------------------------------
+// main
+// ---------------------------------------------------------------------------
+
+int main(int argc, char** argv)
+{
+  std::string data_dir, meshes_arg, large_arg, speed_mesh, json_out, md_out;
+  po::options_description desc(
+    "sphere_benchmark: the spherical Discrete Lie Flow (default options) on closed genus-0 meshes, in one run.\n"
+    "Mesh names: files in <data-dir>/meshes; NAME+loopK means K steps of Loop subdivision.\nOptions");
+  desc.add_options()
+    ("help,h", "this help")
+    ("data-dir", po::value<std::string>(&data_dir)->default_value(DLF_DATA_DIR), "CGAL's data set (meshes in <dir>/meshes)")
+    ("meshes", po::value<std::string>(&meshes_arg)->default_value(""),
+     "comma-separated mesh list (default: every *.off of <dir>/meshes that is a closed, connected, genus-0 triangle mesh "
+     "with at least 200 faces)")
+    ("large", po::value<std::string>(&large_arg)->default_value("bear.off+loop1,armadillo.off+loop1"),
+     "comma-separated meshes of the large section")
+    ("no-large", "skip the large section")
+    ("list", "print the meshes that would be run, and exit")
+    ("speed-mesh", po::value<std::string>(&speed_mesh)->default_value("bear.off+loop1"),
+     "the large mesh whose whole call is held against the 10 s goal")
+    ("json", po::value<std::string>(&json_out)->default_value("sphere_benchmark.json"), "JSON output")
+    ("markdown", po::value<std::string>(&md_out)->default_value("sphere_benchmark.md"), "Markdown tables output");
+  po::variables_map vm;
+  try {
+    po::store(po::parse_command_line(argc, argv, desc), vm);
+    po::notify(vm);
+  } catch(const std::exception& e) {
+    std::cerr << "sphere_benchmark: " << e.what() << "\n";
+    return 2;
+  }
+  if(vm.count("help")) { std::cout << desc << "\n"; return 0; }
+  const fs::path mesh_dir = fs::absolute(fs::path(data_dir) / "meshes");
+  if(!fs::is_directory(mesh_dir)) { std::cerr << "sphere_benchmark: no directory " << mesh_dir << "\n"; return 1; }
+  const bool explicit_list = !meshes_arg.empty();
+  std::vector<std::string> specs = split(meshes_arg);
+  if(!explicit_list) {
+    for(const fs::directory_entry& e : fs::directory_iterator(mesh_dir))
+      if(e.is_regular_file() && e.path().extension() == ".off") specs.push_back(e.path().filename().string());
+    std::sort(specs.begin(), specs.end());
+  }
+  const std::vector<std::string> large_specs = vm.count("no-large") ? std::vector<std::string>() : split(large_arg);
+
+  if(vm.count("list")) {
+    for(const std::vector<std::string>* list : { &std::as_const(specs), &large_specs })
+      for(const std::string& spec : *list) {
+        SM mesh;
+        std::string why;
+        const bool ok = load_mesh(spec, mesh_dir, mesh, why);
+        if(ok && (explicit_list || list == &large_specs || num_faces(mesh) >= min_faces))
+          std::cout << spec << " " << num_faces(mesh) << "\n";
+      }
+    return 0;
+  }
+
+  json doc;
+  doc["command"] = [&] { std::string s; for(int i = 0; i < argc; ++i) s += (i ? " " : "") + std::string(argv[i]); return s; }();
+  doc["settings"] = { { "options", "library defaults" },
+                      { "timing", "wall time of one parameterize() call (seconds); seconds_initial and seconds_flow from the report" },
+                      { "goals", { { "status", "ok" }, { "inverted_faces", 0 }, { "d_area_max", goal_d_area },
+                                   { "log_area_mean_abs_max", goal_log_area_mean }, { "stop_reason", "converged" },
+                                   { "speed_mesh", speed_mesh }, { "speed_seconds_max", goal_speed_seconds } } },
+#ifdef DLF_USE_CHOLMOD
+                      { "solver", "CHOLMOD supernodal LLT" },
+#else
+                      { "solver", "Eigen SimplicialLDLT" },
+#endif
+                      { "cgal_version", CGAL_VERSION_STR } };
+  for(const char* var : { "OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS" })
+    doc["settings"][var] = std::getenv(var) ? std::getenv(var) : "unset";
+  doc["loadavg_start"] = loadavg();
+  const Clock::time_point t_all = Clock::now();
+
+  // Every mesh in this process, one after the other.
+  // The face minimum only filters the default list: a mesh named on the command line is run.
+  auto run_section = [&](const std::vector<std::string>& list, bool report_skips, const char* key) {
+    // Load first, to run the meshes by increasing size.
+    std::vector<std::pair<std::string, SM> > meshes;
+    json skipped = json::array();
+    for(const std::string& spec : list) {
+      SM mesh;
+      std::string why;
+      const Clock::time_point tl = Clock::now();
+      if(!load_mesh(spec, mesh_dir, mesh, why) || (!report_skips && num_faces(mesh) < min_faces)) {
+        if(why.empty()) why = "fewer than " + std::to_string(min_faces) + " faces";
+        if(report_skips) std::cerr << "sphere_benchmark: skipping " << spec << " (" << why << ")\n";
+        skipped.push_back({ { "mesh", spec }, { "reason", why } });
+        continue;
+      }
+      std::cerr << "loaded " << spec << " (" << num_faces(mesh) << " faces) in " << fmt_time(seconds_since(tl)) << " s\n";
+      meshes.emplace_back(spec, std::move(mesh));
+    }
+    std::stable_sort(meshes.begin(), meshes.end(),
+                     [](const auto& a, const auto& b) { return num_faces(a.second) < num_faces(b.second); });
+    json rows = json::array();
+    for(const auto& [spec, mesh] : meshes) {
+      json m;
+      m["mesh"] = spec;
+      m["V"] = num_vertices(mesh);
+      m["F"] = num_faces(mesh);
+      std::cerr << "== " << spec << " (V " << num_vertices(mesh) << ", F " << num_faces(mesh) << ") ... " << std::flush;
+      m["run"] = run_sphere(mesh);
+      m["missed_goals"] = missed_goals(m["run"]);
+      m["meets_goals"] = m["missed_goals"].empty();
+      const json& r = m["run"];
+      std::cerr << std::string(r["status"]) << "  " << fmt_time(r["seconds"]) << " s";
+      if(r.contains("iterations")) std::cerr << "  it " << r["iterations"] << " (" << std::string(r["stop_reason"]) << ")";
+      if(r.contains("final"))
+        std::cerr << "  d_area " << fmt(r["initial"]["d_area"], 4) << " -> " << fmt(r["final"]["d_area"], 4)
+                  << "  mean|log r| " << fmt(r["final"]["log_area_mean_abs"], 4) << "  inverted " << r["inverted_faces"];
+      std::cerr << (m["meets_goals"] ? "  [goals met]" : "") << "\n";
+      rows.push_back(m);
+      // Keep a partial JSON on disk as we go.
+      doc[key] = rows;
+      std::ofstream(json_out) << std::setw(1) << doc << "\n";
+    }
+    doc[std::string(key) + "_skipped"] = skipped;
+    return rows;
+  };
+  const json rows = run_section(specs, explicit_list, "meshes");
+  const json large = run_section(large_specs, true, "large");
+
+  doc["meshes"] = rows;
+  doc["large"] = large;
+  json speed;
+  for(const json& m : large)
+    if(m["mesh"] == speed_mesh) {
+      speed["mesh"] = speed_mesh;
+      speed["F"] = m["F"];
+      speed["seconds"] = m["run"]["seconds"];
+      speed["cpu_seconds"] = m["run"]["cpu_seconds"];
+      speed["status"] = m["run"]["status"];
+      speed["under_goal"] = m["run"]["status"] == "ok" && double(m["run"]["seconds"]) < goal_speed_seconds;
+    }
+  doc["speed_goal"] = speed;
+  doc["total_seconds"] = seconds_since(t_all);
+  doc["loadavg_end"] = loadavg();
+  {
+    std::ofstream out(json_out);
+    out << std::setw(1) << doc << "\n";
+    if(!out) { std::cerr << "sphere_benchmark: cannot write " << json_out << "\n"; return 1; }
+  }
+
+  // --- Markdown
+  std::size_t met = 0, total = 0;
+  for(const json* section : { &rows, &large })
+    for(const json& m : *section) { ++total; if(m["meets_goals"]) ++met; }
+  std::ostringstream md;
+  md << "Generated by `" << std::string(doc["command"]) << "` in " << fmt(doc["total_seconds"], 0) << " s; "
+     << "load average " << std::string(doc["loadavg_start"]) << " at the start, " << std::string(doc["loadavg_end"]) << " at the end. "
+     << "Default options; linear solver: " << std::string(doc["settings"]["solver"]) << "; OMP_NUM_THREADS="
+     << std::string(doc["settings"]["OMP_NUM_THREADS"]) << ", OPENBLAS_NUM_THREADS=" << std::string(doc["settings"]["OPENBLAS_NUM_THREADS"])
+     << ". CGAL " << CGAL_VERSION_STR << ".\n\n"
+     << "Seconds are wall time: *s initial* (certified initial map) and *s flow* from the report, *s total* the whole "
+        "`parameterize()` call (input checks included). *log r* is log(area on the sphere / target area) per face; "
+        "*inverted* counts the faces with `CGAL::orientation(ORIGIN, p, q, r)` not positive on the output points. "
+        "Goals: status ok, 0 inverted, final D_area <= " << goal_d_area << ", mean |log r| <= " << goal_log_area_mean
+     << ", stopped by convergence. " << met << " of " << total << " rows meet them all.\n\n";
+  if(!rows.empty()) {
+    md << "### Closed genus-0 meshes of CGAL's data set\n\n";
+    table(md, rows);
+  }
+  if(!large.empty()) {
+    md << "### Large meshes (Loop subdivision)\n\n";
+    table(md, large);
+    if(speed.contains("seconds"))
+      md << "Speed goal (a 100K-face closed mesh in under " << goal_speed_seconds << " s): " << speed_mesh << ", "
+         << std::size_t(speed["F"]) << " faces, " << fmt_time(speed["seconds"]) << " s (CPU " << fmt_time(speed["cpu_seconds"]) << " s), "
+         << (speed["under_goal"] ? "met" : "**not met**") << ".\n\n";
+  }
+  std::ofstream out(md_out);
+  out << md.str();
+  if(!out) { std::cerr << "sphere_benchmark: cannot write " << md_out << "\n"; return 1; }
+  std::cout << md.str();
+  return 0;
+}
