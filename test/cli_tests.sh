@@ -62,6 +62,12 @@ check "sphere report: status ok" equals "$(json_get sph.json "" status)" ok
 check "sphere report: 0 inverted faces" equals "$(json_get sph.json final inverted_faces)" 0
 check "sphere OBJ: one v per input vertex" equals "$(count_lines sph.obj 'v ')" 162
 check "sphere OBJ: points on the unit sphere" awk '/^v / { r = sqrt($2*$2 + $3*$3 + $4*$4); if(r < 1 - 1e-12 || r > 1 + 1e-12) bad = 1 } END { exit bad }' sph.obj
+check "sphere: converged (d_area and mean |log r| reached)" equals "$(json_get sph.json "" stop_reason)" converged
+check "sphere: mean |log area ratio| <= the default 0.02" python3 -c \
+  "import json, sys; sys.exit(not json.load(open('sph.json'))['final']['log_area_ratio']['mean_abs'] <= 0.02)"
+check "sphere report: the log-area tolerance" equals "$(json_get sph.json options log_area_tolerance)" 0.02
+"$DLF" sphere "$MESHES/sphere.off" --log-area-tolerance 0 --report sph0.json -q
+check "sphere: --log-area-tolerance 0 lets d_area alone decide" awk -v a="$(json_get sph0.json "" iterations)" -v b="$(json_get sph.json "" iterations)" 'BEGIN { exit !(a <= b) }'
 
 # --- help --------------------------------------------------------------------
 check "dlf --help" bash -c "'$DLF' --help | grep -q 'dlf disk'"
@@ -341,6 +347,7 @@ expect_error "--mu out of range" 1 "--mu" disk input.off --mu 1.5
 expect_error "missing INPUT" 1 "missing INPUT" disk
 expect_error "unknown command" 1 "unknown command" frobnicate input.off
 expect_error "sphere: torus refused" 1 "genus" sphere "$MESHES/pipe.off"
+expect_error "sphere: negative --log-area-tolerance" 1 "log-area-tolerance" sphere "$MESHES/sphere.off" --log-area-tolerance -1
 expect_error "sphere: open mesh refused" 1 "ERROR_NOT_GENUS_0" sphere "$NEF"
 
 OUTPUTS="-o out/o.obj --svg out/l.svg" expect_error "--texture not an .obj" 1 "ending in .obj" disk input.off --texture out/t.png

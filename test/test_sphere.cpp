@@ -377,10 +377,111 @@ TEST(Sphere_initial_map, CertifiedOnEveryMesh)
   }
 }
 
+// The flow's area element and its gradient: directional derivatives of
+// E(u(p)) along random tangent moves against finite differences, on faces
+// both inside and outside the damped band (plane distance below h0).
+TEST(Sphere_flow, BarrierGradientMatchesFiniteDifferences)
+{
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> U(-1, 1);
+  const SM sm = read_sphere_mesh("octahedron");
+  const Index_mesh m = index_mesh(sm);
+  std::vector<V3> p;
+  for(const V3& q : m.xyz) p.push_back(D::normalized(V3{{ q[0] + 0.1 * U(rng), q[1] + 0.1 * U(rng), q[2] + 0.1 * U(rng) }}));
+  ASSERT_EQ(exact_sphere_signs(p, m.faces).pos, m.faces.size());
+  std::vector<double> target(m.faces.size());
+  for(double& t : target) t = 1 + 0.5 * (U(rng) + 1);
+  const D::Area_barrier_energy energy(target);
+  for(double h0 : { 0.2, 0.9 }) { // octahedron faces sit at h ≈ 0.58: undamped, then damped
+    SCOPED_TRACE(h0);
+    std::vector<double> u, dE;
+    D::barrier_areas_sphere(p, m.faces, h0, u);
+    energy.derivatives(u, dE);
+    std::vector<V3> g;
+    D::sphere_position_gradient(p, m.faces, dE, h0, g);
+    for(int trial = 0; trial < 5; ++trial) {
+      std::vector<V3> d(p.size());
+      for(V3& x : d) x = {{ U(rng), U(rng), U(rng) }};
+      double analytic = 0;
+      for(std::size_t v = 0; v < p.size(); ++v) analytic += D::dot(g[v], d[v]);
+      const double e = 1e-6;
+      std::vector<V3> plus = p, minus = p;
+      for(std::size_t v = 0; v < p.size(); ++v)
+        for(int j = 0; j < 3; ++j) { plus[v][j] += e * d[v][j]; minus[v][j] -= e * d[v][j]; }
+      std::vector<double> up, um;
+      D::barrier_areas_sphere(plus, m.faces, h0, up);
+      D::barrier_areas_sphere(minus, m.faces, h0, um);
+      const double fd = (energy.value(up) - energy.value(um)) / (2 * e);
+      EXPECT_NEAR(analytic, fd, 1e-6 * (std::abs(fd) + 1));
+    }
+  }
+  // Far from the centre the element is the flat area; through it, zero.
+  const V3 a = D::normalized(V3{{ 1, 0, 0.01 }}), b = D::normalized(V3{{ 0, 1, 0.01 }}), c = D::normalized(V3{{ -1, -1, 0.01 }});
+  EXPECT_GT(D::barrier_area_sphere(a, b, c, 0.2), 0.);
+  EXPECT_LT(D::barrier_area_sphere(a, b, c, 0.2), D::signed_area_sphere(a, b, c));
+  const V3 s1 = D::normalized(V3{{ 1, 0.01, 1 }}), s2 = D::normalized(V3{{ 1.01, 0.01, 1 }}), s3 = D::normalized(V3{{ 1, 0.02, 1.01 }});
+  const double flat = D::signed_area_sphere(s1, s2, s3);
+  ASSERT_GT(flat, 0.);
+  EXPECT_NEAR(D::barrier_area_sphere(s1, s2, s3, 0.2), flat, 1e-15 * flat);
+}
+
+// The Gauss–Newton matrix against its definition: xᵀ A x = Σ_t w_t (∂u_t · x)²
+// + ε xᵀ S x, with ∂u_t · x by finite differences of the area elements along
+// the tangent move x and S the Sobolev matrix applied to each 3D coordinate.
+TEST(Sphere_flow, GaussNewtonMatrixIsItsDefinition)
+{
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> U(-1, 1);
+  const SM sm = read_sphere_mesh("sphere");
+  const Index_mesh m = index_mesh(sm);
+  std::vector<V3> p;
+  for(const V3& q : m.xyz) p.push_back(D::normalized(q));
+  const D::Tangent_frames T(p);
+  for(std::size_t v = 0; v < p.size(); ++v) {
+    EXPECT_NEAR(D::dot(T.e1[v], p[v]), 0., 1e-15);
+    EXPECT_NEAR(D::dot(T.e2[v], p[v]), 0., 1e-15);
+    EXPECT_NEAR(D::dot(T.e1[v], T.e2[v]), 0., 1e-15);
+  }
+  std::vector<double> w(m.faces.size());
+  for(double& x : w) x = 1 + U(rng) * U(rng);
+  const double h0 = 0.99; // some faces damped
+  const D::Sparse_matrix S = D::sphere_sobolev_matrix(p, m.faces, 0.1);
+  const double eps = 1e-2;
+  double ratio = 0;
+  const D::Sparse_matrix A = D::sphere_gauss_newton_matrix(p, m.faces, w, h0, T, S, eps, ratio);
+  ASSERT_EQ(A.rows(), Eigen::Index(2 * p.size()));
+  EXPECT_GT(ratio, 0.);
+  for(int trial = 0; trial < 3; ++trial) {
+    Eigen::VectorXd x(A.rows());
+    for(Eigen::Index i = 0; i < x.size(); ++i) x[i] = U(rng);
+    std::vector<V3> move(p.size());
+    for(std::size_t v = 0; v < p.size(); ++v) move[v] = T.vector(v, x[Eigen::Index(2 * v)], x[Eigen::Index(2 * v + 1)]);
+    const double e = 1e-7;
+    std::vector<V3> plus = p, minus = p;
+    for(std::size_t v = 0; v < p.size(); ++v)
+      for(int j = 0; j < 3; ++j) { plus[v][j] += e * move[v][j]; minus[v][j] -= e * move[v][j]; }
+    std::vector<double> up, um;
+    D::barrier_areas_sphere(plus, m.faces, h0, up);
+    D::barrier_areas_sphere(minus, m.faces, h0, um);
+    double expected = 0;
+    for(std::size_t f = 0; f < m.faces.size(); ++f) {
+      const double du = (up[f] - um[f]) / (2 * e);
+      expected += w[f] * du * du;
+    }
+    for(int c = 0; c < 3; ++c) {
+      Eigen::VectorXd X(Eigen::Index(p.size()));
+      for(std::size_t v = 0; v < p.size(); ++v) X[Eigen::Index(v)] = move[v][std::size_t(c)];
+      expected += eps * ratio * X.dot(S * X);
+    }
+    EXPECT_NEAR(x.dot(A * x), expected, 1e-6 * expected);
+  }
+}
+
 struct Sphere_case
 {
   const char* name;
-  double max_d_area; // what the default run must reach
+  double max_d_area;          // what the default run must reach
+  bool converges = true;      // and then also mean |log r| <= 0.02 (the default log_area_tolerance)
 };
 
 void check_sphere_map(const Sphere_case& c)
@@ -402,9 +503,13 @@ void check_sphere_map(const Sphere_case& c)
   const std::pair<double, double> d = sphere_d_area(m.xyz, p, m.faces);
   EXPECT_NEAR(r.final_d_area, d.first, 1e-9 * d.first);
   EXPECT_NEAR(r.final_metrics.d_area, d.first, 1e-9 * d.first);
+  EXPECT_NEAR(r.final_metrics.log_area_mean_abs, d.second, 1e-9);
   EXPECT_LE(d.first, c.max_d_area);
   EXPECT_LE(r.final_d_area, r.initial_d_area);
-  if(d.first <= 2.01) EXPECT_EQ(r.stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED);
+  if(c.converges) {
+    EXPECT_EQ(r.stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED);
+    EXPECT_LE(d.second, SMP::Discrete_lie_flow_options().log_area_tolerance);
+  }
   std::cout << "[sphere] " << c.name << ": " << m.faces.size() << " faces, start d_area " << r.initial_d_area
             << ", " << r.iterations << " iterations (" << SMP::stop_reason_name(r.stop_reason) << "), d_area "
             << d.first << ", mean |log r| " << d.second << ", inverted " << s.neg + s.zero << ", " << seconds << " s"
@@ -413,17 +518,18 @@ void check_sphere_map(const Sphere_case& c)
 
 TEST(Sphere_map, SphereAndEllipsoid)
 {
-  check_sphere_map({ "sphere", 2.01 });
-  check_sphere_map({ "ellipsoid", 2.01 });
-  check_sphere_map({ "icosahedron", 2.01 });
+  check_sphere_map({ "sphere", 2.001 });
+  check_sphere_map({ "ellipsoid", 2.001 });
+  check_sphere_map({ "icosahedron", 2.01, false }); // 20 faces
 }
 
 TEST(Sphere_map, Blobby) { check_sphere_map({ "blobby", 2.01 }); }
 TEST(Sphere_map, Hand) { check_sphere_map({ "hand", 2.01 }); }
-// Slow tails: these stop on a D_area plateau just above 2.01 (measured 2.012).
-TEST(Sphere_map, Cow) { check_sphere_map({ "cow", 2.02 }); }
-TEST(Sphere_map, Triceratops) { check_sphere_map({ "triceratops", 2.02 }); }
-// Long thin protrusions: a Tutte start compressed by e^29.
+TEST(Sphere_map, Cow) { check_sphere_map({ "cow", 2.01 }); }
+TEST(Sphere_map, Homer) { check_sphere_map({ "homer", 2.01 }); }
+// Compressed starts (e^6 and e^30): the polish's relaxation sweeps are what
+// converge these (before them: plateaus at mean |log r| 0.06 and 0.03).
+TEST(Sphere_map, Triceratops) { check_sphere_map({ "triceratops", 2.01 }); }
 TEST(Sphere_map, Camel) { check_sphere_map({ "camel", 2.01 }); }
 
 TEST(Sphere_map, TinyMeshes)

@@ -76,7 +76,9 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
      "plot d_area - 2 and the area residual per iteration (log scale)")
     ("plot-histogram", po::value<std::string>(&s.histogram_svg)->value_name("PLOT.svg"),
      "histogram of the per-face log area ratios of the result")
-    ("tolerance", po::value<double>(&s.options.tolerance), "stop when d_area - 2 <= this (default 0.01)")
+    ("tolerance", po::value<double>(&s.options.tolerance), "stop when d_area - 2 <= this (default 0.01) ...")
+    ("log-area-tolerance", po::value<double>(&s.options.log_area_tolerance),
+     "... and the mean |log area ratio| <= this (default 0.02; 0: d_area alone decides)")
     ("max-iterations", po::value<std::size_t>(&s.options.max_iterations), "iteration cap (default 500)")
     ("mu", po::value<double>(&s.options.mu), "fraction of the critical step, in (0, 1) (default 0.8)")
     ("history", "per-iteration history in the report")
@@ -104,6 +106,7 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
   if(inputs.size() != 1) throw Cli_error("dlf sphere needs exactly one INPUT mesh (see 'dlf sphere --help')");
   s.input = inputs[0];
   if(!(s.options.tolerance >= 0)) throw Cli_error("--tolerance must be >= 0");
+  if(!(s.options.log_area_tolerance >= 0)) throw Cli_error("--log-area-tolerance must be >= 0");
   if(vm.count("mu") && !(s.options.mu > 0 && s.options.mu < 1)) throw Cli_error("--mu must be in (0, 1)");
   if(vm.count("quiet") && vm.count("verbose")) throw Cli_error("--quiet and --verbose exclude each other");
   if(vm.count("quiet")) s.verbosity = Verbosity::QUIET;
@@ -191,6 +194,8 @@ int sphere_command(const std::vector<std::string>& args)
     j["iterations"] = R.iterations;
     j["stop_reason"] = SMP::stop_reason_name(R.stop_reason);
     j["seconds"] = { { "initial", R.seconds_initial }, { "flow", R.seconds_flow }, { "total", total } };
+    j["options"] = { { "tolerance", s.options.tolerance }, { "log_area_tolerance", s.options.log_area_tolerance },
+                     { "max_iterations", s.options.max_iterations } };
     j["initial"] = ok ? metrics_to_json(R.initial_metrics) : json(nullptr);
     j["final"] = ok ? metrics_to_json(R.final_metrics) : json(nullptr);
     j["puncture_face"] = R.puncture_face;

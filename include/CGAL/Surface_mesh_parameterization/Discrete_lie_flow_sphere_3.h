@@ -47,7 +47,8 @@ struct Discrete_lie_flow_sphere_report
   std::size_t initial_attempts = 0; ///< punctures tried before one was certified
   std::size_t factorizations = 0, symbolic_analyses = 0;
   double seconds_initial = 0, seconds_flow = 0;
-  /// Split of seconds_flow: matrix assembly, factorisation and solve, step search and certification.
+  /// Split of seconds_flow: matrix assembly, factorisation and solve, step search, certification and
+  /// the polish's vertex relaxation.
   double seconds_assembly = 0, seconds_solve = 0, seconds_step = 0;
   /// The metrics of DESIGN.md of the initial and the final map (valid when status is OK).
   internal::dlf::Distortion_metrics initial_metrics, final_metrics;
@@ -65,10 +66,12 @@ struct Discrete_lie_flow_sphere_report
 /// area distortion; it is accepted only when every face is positively
 /// oriented by CGAL's exact predicate `orientation(O, p, q, r)` (O the
 /// centre), else other punctures are tried. The flow (certified mode, the
-/// only mode on the sphere) descends the barrier energy D_area of the flat
-/// triangles between the sphere points along the tangential Sobolev gradient,
-/// with the step bounded by μ times the smallest positive root of the
-/// per-face cubics det[p₁ + λt₁, p₂ + λt₂, p₃ + λt₃], every point
+/// only mode on the sphere) descends the barrier energy D_area of the
+/// triangles between the sphere points: first on their cone areas along the
+/// tangential Sobolev gradient, then on their flat areas along a regularised
+/// Gauss–Newton direction followed by vertex-by-vertex relaxation sweeps.
+/// Every global step is bounded by μ times the smallest positive root of the
+/// per-face cubics det[p₁ + λt₁, p₂ + λt₂, p₃ + λt₃], every point is
 /// re-normalised and every accepted step certified exactly. The result is
 /// never folded: every face of the caller's mesh keeps det[p, q, r] > 0.
 ///

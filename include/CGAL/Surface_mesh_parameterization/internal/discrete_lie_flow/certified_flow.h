@@ -61,6 +61,20 @@ public:
     for(std::size_t t = 0; t < u.size(); ++t) dE[t] = K - U * m_c[t] / (u[t] * u[t]);
   }
 
+  /// c_t = (A_t / Σ A)².
+  double weight(std::size_t t) const { return m_c[t]; }
+
+  /// The diagonal of the Hessian, ∂²E/∂u_t² ≈ 2 U c_t / u_t³ (the
+  /// O(1/U²) terms of the global coupling through U dropped: they are a
+  /// factor F smaller), for the Gauss–Newton model of the spherical flow.
+  void curvatures(const std::vector<double>& u, std::vector<double>& w) const
+  {
+    double U = 0;
+    for(double x : u) U += x;
+    w.resize(u.size());
+    for(std::size_t t = 0; t < u.size(); ++t) w[t] = 2 * U * m_c[t] / (u[t] * u[t] * u[t]);
+  }
+
 private:
   std::vector<double> m_c;
 };

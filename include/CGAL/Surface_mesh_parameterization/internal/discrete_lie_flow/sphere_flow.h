@@ -3,18 +3,23 @@
 //
 // The certified flow on the unit sphere: the planar certified flow
 // (certified_flow.h) carried over to the flat triangles between sphere
-// points. Energy: the barrier D_area on the cone areas ½ det[p0, p1, p2]
-// (≈ the flat areas on fine meshes, and zero exactly where the orientation
-// predicate is); the stop test and the report use the flat areas. Direction: the
-// tangential part of the Sobolev gradient, preconditioned by the cotangent
-// stiffness of the current spherical mesh plus a small lumped mass term (the
-// constants are not a null space of the motion on the sphere, so the term
-// makes the matrix SPD without pinning anything); x, y, z share one
-// factorisation; near the targets an L-BFGS correction on top of that metric
-// (measured: triceratops 2.58 → 2.009 within 300 iterations). Step: μ times the smallest positive root of the per-face
-// orientation cubics det[p_k + λ d_k], points re-normalised, Armijo
-// backtracking, every accepted step certified by the exact orientation of
-// every face on the stored doubles.
+// points, in two phases.
+// - Opening: energy D_area on the cone areas ½ det[p0, p1, p2] (zero exactly
+//   where the orientation predicate is, so a barrier for it even on the huge
+//   faces of a start compressed by e^30); direction: the tangential Sobolev
+//   gradient, preconditioned by the cotangent stiffness of the current
+//   spherical mesh plus a small lumped mass term (x, y, z share one
+//   factorisation), L-BFGS-corrected once D_area < 3.
+// - Polish, once D_area < 2.05 or the opening stops paying (plateau, or the
+//   flat D_area rising: cone and flat areas differ on coarse meshes): energy
+//   D_area on the flat areas (damped only on faces whose plane nears the
+//   centre, barrier_area_sphere); direction: regularised Gauss–Newton
+//   (sphere_gauss_newton.h), which also brings the mean |log area ratio|
+//   down where the Sobolev flow left it at 0.05–0.09.
+// Step: μ times the smallest positive root of the per-face orientation cubics
+// det[p_k + λ d_k] (and at most 1 in the polish), points re-normalised,
+// Armijo backtracking, every accepted step certified by the exact
+// orientation of every face on the stored doubles.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_SPHERE_FLOW_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_SPHERE_FLOW_H
@@ -22,7 +27,9 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certified_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/cotangent_laplacian.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_problem.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_gauss_newton.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_problem.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_relaxation.h>
 
 #include <Eigen/Sparse>
 
@@ -50,6 +57,23 @@ struct Sphere_flow_settings
   /// targets the barrier makes the curvature pairs misleading.
   std::size_t lbfgs_memory = 3;
   double lbfgs_below = 3;
+  /// Plane distance below which a face's area element is damped towards
+  /// zero (barrier_area_sphere); faces of fine meshes sit at h ≈ 1.
+  double barrier_distance = 0.2;
+  /// D_area below which the direction is the regularised Gauss–Newton one
+  /// (sphere_gauss_newton.h) instead of the Sobolev/L-BFGS one.
+  double newton_below = 2.05;
+  /// Initial ε of the Levenberg–Marquardt regularisation, relative to tr(H)/tr(S).
+  double newton_regularization = 1e-2;
+  /// Vertex-by-vertex relaxation sweeps after each polish step
+  /// (sphere_relaxation.h; measured: 1 → 10 sweeps took camel.off from a
+  /// plateau at mean |log r| 0.025 to convergence, and cow.off from 111 to
+  /// 62 iterations; the same sweeps in the opening phase, on the cone
+  /// areas, made cow, camel and bull much worse).
+  std::size_t relaxation_sweeps = 10;
+  /// Sweeps visit the corners of the faces with |log area ratio| above this
+  /// (0: every vertex; 0.05 halved the cost and lost camel.off's convergence).
+  double relaxation_threshold = 0;
 };
 
 /// Cotangent stiffness plus `mass_weight` × lumped mass of the flat triangles
@@ -80,11 +104,11 @@ inline Sparse_matrix sphere_sobolev_matrix(const std::vector<Vec3>& p, const std
   return K;
 }
 
-/// ∂E/∂p from per-face ∂E/∂u_t, u_t = ½ det[p0, p1, p2] (cone_area_sphere):
+/// ∂E/∂p from per-face ∂E/∂u_t for the cone areas u_t = ½ det[p0, p1, p2]:
 /// ∂u/∂p_k = ½ p_{k+1} × p_{k+2}, evaluated as ½ (N + p_k × (p_{k+2} − p_{k+1}))
 /// with N = (p1 − p0) × (p2 − p0), which keeps its relative accuracy on tiny faces.
-inline void sphere_position_gradient(const std::vector<Vec3>& p, const std::vector<Face>& faces,
-                                     const std::vector<double>& dE, std::vector<Vec3>& g)
+inline void cone_position_gradient(const std::vector<Vec3>& p, const std::vector<Face>& faces,
+                                   const std::vector<double>& dE, std::vector<Vec3>& g)
 {
   g.assign(p.size(), Vec3{{ 0, 0, 0 }});
   for(std::size_t f = 0; f < faces.size(); ++f) {
@@ -95,6 +119,34 @@ inline void sphere_position_gradient(const std::vector<Vec3>& p, const std::vect
       const Vec3 c = cross(pk, sub(p[std::size_t(t[(k + 2) % 3])], p[std::size_t(t[(k + 1) % 3])]));
       Vec3& gk = g[std::size_t(t[k])];
       for(int j = 0; j < 3; ++j) gk[j] += 0.5 * dE[f] * (N[j] + c[j]);
+    }
+  }
+}
+
+/// ∂E/∂p from per-face ∂E/∂u_t, u_t = barrier_area_sphere(p0, p1, p2, h0).
+/// With l = |N|, N = (p1 − p0) × (p2 − p0), C = det[p0, p1, p2] = l h and
+/// s = h / h0: ∂l/∂p_k = n̂ × (p_{k+2} − p_{k+1}), ∂C/∂p_k = p_{k+1} × p_{k+2}
+/// (evaluated as N + p_k × (p_{k+2} − p_{k+1}), which keeps its relative
+/// accuracy on tiny faces), and ∂u/∂p_k = ½ (s² ∂l + (2 − 2s)/h0 ∂C) for
+/// s < 1, ½ ∂l above.
+inline void sphere_position_gradient(const std::vector<Vec3>& p, const std::vector<Face>& faces,
+                                     const std::vector<double>& dE, double h0, std::vector<Vec3>& g)
+{
+  g.assign(p.size(), Vec3{{ 0, 0, 0 }});
+  for(std::size_t f = 0; f < faces.size(); ++f) {
+    const Face& t = faces[f];
+    const Vec3 N = cross(sub(p[std::size_t(t[1])], p[std::size_t(t[0])]), sub(p[std::size_t(t[2])], p[std::size_t(t[0])]));
+    const double l = std::sqrt(dot(N, N));
+    const Vec3 n = {{ N[0] / l, N[1] / l, N[2] / l }};
+    const double s = dot(p[std::size_t(t[0])], N) / (l * h0);
+    const double wl = s < 1 ? s * s : 1, wc = s < 1 ? (2 - 2 * s) / h0 : 0;
+    for(int k = 0; k < 3; ++k) {
+      const Vec3& pk = p[std::size_t(t[k])];
+      const Vec3 e = sub(p[std::size_t(t[(k + 2) % 3])], p[std::size_t(t[(k + 1) % 3])]);
+      const Vec3 dl = cross(n, e);
+      const Vec3 c = cross(pk, e);
+      Vec3& gk = g[std::size_t(t[k])];
+      for(int j = 0; j < 3; ++j) gk[j] += 0.5 * dE[f] * (wl * dl[j] + wc * (N[j] + c[j]));
     }
   }
 }
@@ -122,12 +174,29 @@ Flow_outcome certified_sphere_flow(const Sphere_problem& P, std::vector<Vec3>& p
   const double mu = opt.mu > 0 ? opt.mu : 0.8;
   Area_barrier_energy energy(P.target);
   Pattern_reusing_solver<EigenSolver> solver(eigen_solver);
+  EigenSolver newton_eigen_solver; // its own symbolic analysis: 2n unknowns
+  Pattern_reusing_solver<EigenSolver> newton_solver(newton_eigen_solver);
+  double eps_relative = settings.newton_regularization;
+  std::vector<double> curvature;
+  Vertex_faces around(0, std::vector<Face>());
 
   std::vector<double> u, dE, u_trial, rho;
   std::vector<Vec3> p_prev, g_prev;
   std::vector<std::vector<Vec3> > pairs_s, pairs_y;
   std::vector<Vec3> g, d(n), trial(n);
-  cone_areas_sphere(p, P.faces, u);
+  // Two area elements: the cone areas while far from the targets, the
+  // (damped) flat ones of the metric in the Gauss–Newton polish.
+  bool polish = false, force_polish = false;
+  // The cone areas differ from the flat ones on coarse meshes: once the
+  // flat D_area keeps rising under the cone energy, polish instead
+  // (spool.off: 2.03 at iteration 46, 2.14 at the cone flow's plateau).
+  double best_cone_D = infinite_step();
+  std::size_t rising = 0;
+  const auto area_elements = [&](const std::vector<Vec3>& x, std::vector<double>& out_u) {
+    if(polish) barrier_areas_sphere(x, P.faces, settings.barrier_distance, out_u);
+    else cone_areas_sphere(x, P.faces, out_u);
+  };
+  area_elements(p, u);
   double E = energy.value(u);
   double D = flat_d_area(p, P.faces, P.target);
   out.initial_d_area = out.final_d_area = D;
@@ -137,10 +206,22 @@ Flow_outcome certified_sphere_flow(const Sphere_problem& P, std::vector<Vec3>& p
   double lambda_prev = infinite_step();
   std::size_t hard_steps = 0; // consecutive steps that needed many halvings
   out.stop_reason = Discrete_lie_flow_stop_reason::ITERATION_CAP;
+  const auto converged = [&]() {
+    return D - 2 <= opt.tolerance &&
+           (!(opt.log_area_tolerance > 0) || flat_mean_abs_log_ratio(p, P.faces, P.target) <= opt.log_area_tolerance);
+  };
   for(std::size_t it = 1; it <= opt.max_iterations; ++it) {
-    if(D - 2 <= opt.tolerance) { out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED; break; }
+    if(converged()) { out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED; break; }
+    if(!polish && (force_polish || D < settings.newton_below)) {
+      polish = true;
+      area_elements(p, u);
+      E = energy.value(u);
+      E_history.assign(1, E);
+      lambda_prev = infinite_step();
+    }
     energy.derivatives(u, dE);
-    sphere_position_gradient(p, P.faces, dE, g);
+    if(polish) sphere_position_gradient(p, P.faces, dE, settings.barrier_distance, g);
+    else cone_position_gradient(p, P.faces, dE, g);
     project_to_tangent(p, g);
 
     // Direction d = −P H g, P the tangent projection, H = K⁻¹ (the Sobolev
@@ -150,51 +231,73 @@ Flow_outcome certified_sphere_flow(const Sphere_problem& P, std::vector<Vec3>& p
     Clock::time_point toc = Clock::now();
     out.seconds_assembly += std::chrono::duration<double>(toc - tic).count();
     ++out.factorizations;
-    // Curvature pairs of the last accepted steps (L-BFGS on top of the
-    // Sobolev metric: K⁻¹ is the initial inverse Hessian of the two-loop recursion).
-    if(D > settings.lbfgs_below) { pairs_s.clear(); pairs_y.clear(); rho.clear(); }
-    else if(!p_prev.empty()) {
-      std::vector<Vec3> s_k(n), y_k(n);
-      double sy = 0;
+    const bool newton = polish; // factorises its own matrix instead of K
+    if(newton) {
+      pairs_s.clear(); pairs_y.clear(); rho.clear();
+      const Tangent_frames T(p);
+      energy.curvatures(u, curvature);
+      double ratio = 1;
+      const Sparse_matrix A = sphere_gauss_newton_matrix(p, P.faces, curvature, settings.barrier_distance, T, K,
+                                                         eps_relative, ratio);
+      const Clock::time_point assembled = Clock::now();
+      out.seconds_assembly += std::chrono::duration<double>(assembled - toc).count();
+      toc = assembled;
+      Eigen::VectorXd b(Eigen::Index(2 * n)), x;
       for(std::size_t v = 0; v < n; ++v) {
-        s_k[v] = sub(p[v], p_prev[v]);
-        y_k[v] = sub(g[v], g_prev[v]);
-        sy += dot(s_k[v], y_k[v]);
+        const std::array<double, 2> c = T.coordinates(v, g[v]);
+        b[Eigen::Index(2 * v)] = -c[0];
+        b[Eigen::Index(2 * v + 1)] = -c[1];
       }
-      if(sy > 0 && settings.lbfgs_memory > 0) {
-        pairs_s.push_back(std::move(s_k));
-        pairs_y.push_back(std::move(y_k));
-        rho.push_back(1 / sy);
-        if(pairs_s.size() > settings.lbfgs_memory) { pairs_s.erase(pairs_s.begin()); pairs_y.erase(pairs_y.begin()); rho.erase(rho.begin()); }
+      bool solved = newton_solver.factorize(A) && newton_solver.solve(b, x);
+      if(solved) for(std::size_t v = 0; v < n; ++v) d[v] = T.vector(v, x[Eigen::Index(2 * v)], x[Eigen::Index(2 * v + 1)]);
+      else { out.solver_failed = true; for(std::size_t v = 0; v < n; ++v) d[v] = {{ -g[v][0], -g[v][1], -g[v][2] }}; }
+    } else {
+      // Curvature pairs of the last accepted steps (L-BFGS on top of the
+      // Sobolev metric: K⁻¹ is the initial inverse Hessian of the two-loop recursion).
+      if(D > settings.lbfgs_below) { pairs_s.clear(); pairs_y.clear(); rho.clear(); }
+      else if(!p_prev.empty()) {
+        std::vector<Vec3> s_k(n), y_k(n);
+        double sy = 0;
+        for(std::size_t v = 0; v < n; ++v) {
+          s_k[v] = sub(p[v], p_prev[v]);
+          y_k[v] = sub(g[v], g_prev[v]);
+          sy += dot(s_k[v], y_k[v]);
+        }
+        if(sy > 0 && settings.lbfgs_memory > 0) {
+          pairs_s.push_back(std::move(s_k));
+          pairs_y.push_back(std::move(y_k));
+          rho.push_back(1 / sy);
+          if(pairs_s.size() > settings.lbfgs_memory) { pairs_s.erase(pairs_s.begin()); pairs_y.erase(pairs_y.begin()); rho.erase(rho.begin()); }
+        }
       }
+      std::vector<Vec3> q = g;
+      std::vector<double> alpha(pairs_s.size());
+      for(std::size_t i = pairs_s.size(); i-- > 0;) {
+        double a = 0;
+        for(std::size_t v = 0; v < n; ++v) a += dot(pairs_s[i][v], q[v]);
+        alpha[i] = a * rho[i];
+        for(std::size_t v = 0; v < n; ++v) for(int j = 0; j < 3; ++j) q[v][j] -= alpha[i] * pairs_y[i][v][j];
+      }
+      bool solved = solver.factorize(K);
+      for(int c = 0; c < 3 && solved; ++c) {
+        Eigen::VectorXd b(static_cast<Eigen::Index>(n)), x;
+        for(std::size_t v = 0; v < n; ++v) b[Eigen::Index(v)] = q[v][std::size_t(c)];
+        solved = solver.solve(b, x);
+        if(solved) for(std::size_t v = 0; v < n; ++v) d[v][std::size_t(c)] = x[Eigen::Index(v)];
+      }
+      if(!solved) {
+        out.solver_failed = true;
+        d = q;
+      }
+      for(std::size_t i = 0; i < pairs_s.size(); ++i) {
+        double b = 0;
+        for(std::size_t v = 0; v < n; ++v) b += dot(pairs_y[i][v], d[v]);
+        b *= rho[i];
+        for(std::size_t v = 0; v < n; ++v) for(int j = 0; j < 3; ++j) d[v][j] += (alpha[i] - b) * pairs_s[i][v][j];
+      }
+      for(Vec3& x : d) x = {{ -x[0], -x[1], -x[2] }};
+      project_to_tangent(p, d);
     }
-    std::vector<Vec3> q = g;
-    std::vector<double> alpha(pairs_s.size());
-    for(std::size_t i = pairs_s.size(); i-- > 0;) {
-      double a = 0;
-      for(std::size_t v = 0; v < n; ++v) a += dot(pairs_s[i][v], q[v]);
-      alpha[i] = a * rho[i];
-      for(std::size_t v = 0; v < n; ++v) for(int j = 0; j < 3; ++j) q[v][j] -= alpha[i] * pairs_y[i][v][j];
-    }
-    bool solved = solver.factorize(K);
-    for(int c = 0; c < 3 && solved; ++c) {
-      Eigen::VectorXd b(static_cast<Eigen::Index>(n)), x;
-      for(std::size_t v = 0; v < n; ++v) b[Eigen::Index(v)] = q[v][std::size_t(c)];
-      solved = solver.solve(b, x);
-      if(solved) for(std::size_t v = 0; v < n; ++v) d[v][std::size_t(c)] = x[Eigen::Index(v)];
-    }
-    if(!solved) {
-      out.solver_failed = true;
-      d = q;
-    }
-    for(std::size_t i = 0; i < pairs_s.size(); ++i) {
-      double b = 0;
-      for(std::size_t v = 0; v < n; ++v) b += dot(pairs_y[i][v], d[v]);
-      b *= rho[i];
-      for(std::size_t v = 0; v < n; ++v) for(int j = 0; j < 3; ++j) d[v][j] += (alpha[i] - b) * pairs_s[i][v][j];
-    }
-    for(Vec3& x : d) x = {{ -x[0], -x[1], -x[2] }};
-    project_to_tangent(p, d);
     tic = Clock::now();
     out.seconds_solve += std::chrono::duration<double>(tic - toc).count();
     double slope = 0, gg = 0;
@@ -214,7 +317,8 @@ Flow_outcome certified_sphere_flow(const Sphere_problem& P, std::vector<Vec3>& p
       const double r = critical_step_sphere(p[a], p[b], p[c], d[a], d[b], d[c]);
       if(r < lambda_crit) { lambda_crit = r; limiting = int(f); }
     }
-    double lambda = opt.fixed_step > 0 ? opt.fixed_step : (std::min)(4 * lambda_prev, mu * lambda_crit);
+    double lambda = opt.fixed_step > 0 ? opt.fixed_step
+                    : (std::min)(newton ? 1. : 4 * lambda_prev, mu * lambda_crit);
     if(!std::isfinite(lambda)) lambda = 1;
 
     // Armijo backtracking; the exact predicate has the last word. The slope
@@ -225,7 +329,7 @@ Flow_outcome certified_sphere_flow(const Sphere_problem& P, std::vector<Vec3>& p
     for(; halvings <= opt.max_backtracks; ++halvings, lambda *= 0.5) {
       for(std::size_t v = 0; v < n; ++v)
         trial[v] = normalized(Vec3{{ p[v][0] + lambda * d[v][0], p[v][1] + lambda * d[v][1], p[v][2] + lambda * d[v][2] }});
-      cone_areas_sphere(trial, P.faces, u_trial);
+      area_elements(trial, u_trial);
       E_trial = energy.value(u_trial);
       if(!(E_trial <= E + 1e-4 * lambda * slope)) continue;
       if(!count_orientations_sphere(trial, P.faces, true).all_positive()) { ++out.rejected_by_exact_check; continue; }
@@ -234,17 +338,39 @@ Flow_outcome certified_sphere_flow(const Sphere_problem& P, std::vector<Vec3>& p
     }
     out.seconds_step += std::chrono::duration<double>(Clock::now() - tic).count();
     if(!accepted) { out.stop_reason = Discrete_lie_flow_stop_reason::STALLED; break; }
+    // Levenberg–Marquardt: trust the model more after a full step, less after halvings.
+    if(newton) eps_relative = halvings == 0 ? (std::max)(eps_relative / 4, 1e-8)
+                                            : (halvings >= 2 ? (std::min)(eps_relative * 4, 1e4) : eps_relative);
 
     p_prev = p;
     g_prev = g;
     p.swap(trial);
     u.swap(u_trial);
     E = E_trial;
+    if(polish && settings.relaxation_sweeps > 0) {
+      // The global step moved the smooth modes; sweeps take the grid-scale ones.
+      const Clock::time_point swept = Clock::now();
+      if(around.first.size() != n + 1) around = Vertex_faces(n, P.faces);
+      const std::vector<std::size_t> active = vertices_to_relax(P.faces, energy, u, n, settings.relaxation_threshold);
+      for(std::size_t k = 0; k < settings.relaxation_sweeps && !active.empty(); ++k) {
+        const Relaxation_outcome r =
+          relax_sphere_vertices(P.faces, around, energy, settings.barrier_distance, mu, active, p, u);
+        out.rejected_by_exact_check += r.refused_by_exact_check;
+      }
+      area_elements(p, u); // drop the sweeps' incremental rounding
+      E = energy.value(u);
+      out.seconds_step += std::chrono::duration<double>(Clock::now() - swept).count();
+    }
     D = flat_d_area(p, P.faces, P.target);
     lambda_prev = lambda;
     out.iterations = it;
     out.final_d_area = D;
     E_history.push_back(E);
+    if(!polish) {
+      rising = D > best_cone_D ? rising + 1 : 0;
+      best_cone_D = (std::min)(best_cone_D, D);
+      if(rising >= 3) force_polish = true;
+    }
 
     Discrete_lie_flow_iteration info;
     info.iteration = it;
@@ -258,17 +384,20 @@ Flow_outcome certified_sphere_flow(const Sphere_problem& P, std::vector<Vec3>& p
     if(opt.record_history) out.history.push_back(info);
     if(opt.callback && !opt.callback(info)) { out.stop_reason = Discrete_lie_flow_stop_reason::INTERRUPTED; break; }
 
-    if(D - 2 <= opt.tolerance) { out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED; break; }
+    if(converged()) { out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED; break; }
     // Stall: the step keeps collapsing (many halvings, step by step). An
     // absolute threshold on λ would be wrong: tiny steps can still lower E a lot.
     hard_steps = (halvings >= 20) ? hard_steps + 1 : 0;
     if(hard_steps >= opt.stall_window) { out.stop_reason = Discrete_lie_flow_stop_reason::STALLED; break; }
     if(E_history.size() > opt.plateau_window) {
       const double old = E_history[E_history.size() - 1 - opt.plateau_window];
-      if(old - E < opt.plateau_tolerance * (E - 1)) { out.stop_reason = Discrete_lie_flow_stop_reason::PLATEAU; break; }
+      if(old - E < opt.plateau_tolerance * (E - 1)) {
+        if(polish) { out.stop_reason = Discrete_lie_flow_stop_reason::PLATEAU; break; }
+        force_polish = true; // the Sobolev flow is done: polish from here
+      }
     }
   }
-  out.symbolic_analyses = solver.analyses();
+  out.symbolic_analyses = solver.analyses() + newton_solver.analyses();
   std::vector<double> flat;
   signed_areas_sphere(p, P.faces, flat);
   out.final_residual = area_residual(n, P.faces, flat, P.target);

@@ -1,0 +1,134 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The Gauss–Newton direction of the spherical flow, for the last digits.
+// The Sobolev gradient balances the flow's smooth modes but not the
+// grid-scale ones: on a closed mesh F ≈ 2V, so the face areas are nearly as
+// many as the tangential degrees of freedom, and the mismatch between
+// neighbouring faces is what a Laplacian metric reduces slowly (measured: the
+// Sobolev/L-BFGS flow plateaued at D_area 2.001–2.01 on cow, homer, camel,
+// armadillo). The Gauss–Newton model of E = Σ e_t(u_t) in the tangent planes,
+// H = Jᵀ diag(e_t'') J (J = ∂u/∂p restricted to the tangent planes),
+// regularised by ε times the Sobolev metric (Levenberg–Marquardt: the
+// metric fixes the rotations, which do not change any area, and ε adapts to
+// how well the model predicted the last step), converges quadratically.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_SPHERE_GAUSS_NEWTON_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_SPHERE_GAUSS_NEWTON_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/cotangent_laplacian.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_problem.h>
+
+#include <Eigen/Sparse>
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace dlf {
+
+/// An orthonormal basis (e1, e2) of the tangent plane at every unit vector.
+struct Tangent_frames
+{
+  std::vector<Vec3> e1, e2;
+
+  explicit Tangent_frames(const std::vector<Vec3>& p) : e1(p.size()), e2(p.size())
+  {
+    for(std::size_t i = 0; i < p.size(); ++i) {
+      // The axis least aligned with p, projected: never close to parallel.
+      const Vec3& q = p[i];
+      const int a = (std::abs(q[0]) <= std::abs(q[1]) && std::abs(q[0]) <= std::abs(q[2])) ? 0
+                    : (std::abs(q[1]) <= std::abs(q[2]) ? 1 : 2);
+      Vec3 t{{ 0, 0, 0 }};
+      t[std::size_t(a)] = 1;
+      const double s = dot(t, q);
+      e1[i] = normalized(Vec3{{ t[0] - s * q[0], t[1] - s * q[1], t[2] - s * q[2] }});
+      e2[i] = cross(q, e1[i]);
+    }
+  }
+
+  std::array<double, 2> coordinates(std::size_t i, const Vec3& v) const { return {{ dot(e1[i], v), dot(e2[i], v) }}; }
+  Vec3 vector(std::size_t i, double x, double y) const
+  {
+    return {{ x * e1[i][0] + y * e2[i][0], x * e1[i][1] + y * e2[i][1], x * e1[i][2] + y * e2[i][2] }};
+  }
+};
+
+/// ∂u_t/∂p_k of barrier_area_sphere for the three corners of face `t`
+/// (see sphere_position_gradient for the formulas).
+inline std::array<Vec3, 3> barrier_area_gradients(const std::vector<Vec3>& p, const Face& t, double h0)
+{
+  const Vec3 N = cross(sub(p[std::size_t(t[1])], p[std::size_t(t[0])]), sub(p[std::size_t(t[2])], p[std::size_t(t[0])]));
+  const double l = std::sqrt(dot(N, N));
+  const Vec3 n = {{ N[0] / l, N[1] / l, N[2] / l }};
+  const double s = dot(p[std::size_t(t[0])], N) / (l * h0);
+  const double wl = s < 1 ? s * s : 1, wc = s < 1 ? (2 - 2 * s) / h0 : 0;
+  std::array<Vec3, 3> G;
+  for(int k = 0; k < 3; ++k) {
+    const Vec3 e = sub(p[std::size_t(t[(k + 2) % 3])], p[std::size_t(t[(k + 1) % 3])]);
+    const Vec3 dl = cross(n, e), c = cross(p[std::size_t(t[k])], e);
+    for(int j = 0; j < 3; ++j) G[std::size_t(k)][std::size_t(j)] = 0.5 * (wl * dl[j] + wc * (N[j] + c[j]));
+  }
+  return G;
+}
+
+/// H + ε S in the tangent frames (2 unknowns per vertex, x of vertex i at
+/// 2i, 2i + 1): H = Σ_t w_t g_t g_tᵀ with g_t the tangential gradient of
+/// u_t, S the Sobolev metric `K` (n × n, one copy per coordinate) seen
+/// through the frames. The diagonal of H weighs each face by e_t''(u_t).
+/// Returns tr(H) / tr(S) in `ratio` so that the caller can scale ε.
+inline Sparse_matrix sphere_gauss_newton_matrix(const std::vector<Vec3>& p, const std::vector<Face>& faces,
+                                                const std::vector<double>& w, double h0, const Tangent_frames& T,
+                                                const Sparse_matrix& K, double eps_relative, double& ratio)
+{
+  const std::size_t n = p.size();
+  std::vector<Eigen::Triplet<double> > trip;
+  trip.reserve(faces.size() * 36 + std::size_t(K.nonZeros()) * 4);
+  double trace_H = 0;
+  std::vector<std::array<double, 2> > g(3);
+  for(std::size_t f = 0; f < faces.size(); ++f) {
+    const Face& t = faces[f];
+    const std::array<Vec3, 3> G = barrier_area_gradients(p, t, h0);
+    for(int k = 0; k < 3; ++k) g[std::size_t(k)] = T.coordinates(std::size_t(t[k]), G[std::size_t(k)]);
+    for(int k = 0; k < 3; ++k)
+      for(int l = 0; l < 3; ++l)
+        for(int a = 0; a < 2; ++a)
+          for(int b = 0; b < 2; ++b) {
+            const double v = w[f] * g[std::size_t(k)][std::size_t(a)] * g[std::size_t(l)][std::size_t(b)];
+            trip.emplace_back(2 * t[k] + a, 2 * t[l] + b, v);
+            if(k == l && a == b) trace_H += v;
+          }
+  }
+  double trace_S = 0;
+  for(int k = 0; k < K.outerSize(); ++k)
+    for(Sparse_matrix::InnerIterator it(K, k); it; ++it)
+      if(it.row() == it.col()) trace_S += 2 * it.value();
+  ratio = trace_S > 0 ? trace_H / trace_S : 1;
+  const double eps = eps_relative * ratio;
+  for(int k = 0; k < K.outerSize(); ++k)
+    for(Sparse_matrix::InnerIterator it(K, k); it; ++it) {
+      const std::size_t i = std::size_t(it.row()), j = std::size_t(it.col());
+      // S_ij = K_ij Tᵢᵀ Tⱼ (2 × 2)
+      const double m00 = dot(T.e1[i], T.e1[j]), m01 = dot(T.e1[i], T.e2[j]);
+      const double m10 = dot(T.e2[i], T.e1[j]), m11 = dot(T.e2[i], T.e2[j]);
+      const double v = eps * it.value();
+      trip.emplace_back(int(2 * i), int(2 * j), v * m00);
+      trip.emplace_back(int(2 * i), int(2 * j + 1), v * m01);
+      trip.emplace_back(int(2 * i + 1), int(2 * j), v * m10);
+      trip.emplace_back(int(2 * i + 1), int(2 * j + 1), v * m11);
+    }
+  Sparse_matrix A(Eigen::Index(2 * n), Eigen::Index(2 * n));
+  A.setFromTriplets(trip.begin(), trip.end());
+  A.makeCompressed();
+  return A;
+}
+
+} // namespace dlf
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
