@@ -11,9 +11,11 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_CERTIFIED_FLOW_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_CERTIFIED_FLOW_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/area_barrier_energy.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/boundary_curve.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/cotangent_laplacian.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_problem.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/planar_relaxation.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sobolev_direction.h>
 
 #include <chrono>
@@ -25,59 +27,6 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 namespace dlf {
-
-/// The barrier energy in closed form. With u_t the signed domain areas,
-/// U = Σ u_t, c_t = (A_t / Σ A)², the area-weighted mean of r_t = (u_t/U)/(A_t/ΣA)
-/// is 1, hence E = Σ w_t (r_t + 1/r_t) = 1 + U Σ_t c_t / u_t and
-/// ∂E/∂u_t = Σ_s c_s/u_s − U c_t / u_t².
-class Area_barrier_energy
-{
-public:
-  explicit Area_barrier_energy(const std::vector<double>& target) : m_c(target.size())
-  {
-    double T = 0;
-    for(double a : target) T += a;
-    for(std::size_t t = 0; t < target.size(); ++t) m_c[t] = (target[t] / T) * (target[t] / T);
-  }
-
-  /// E(u), +∞ when a face is not positive.
-  double value(const std::vector<double>& u) const
-  {
-    double U = 0, K = 0;
-    for(std::size_t t = 0; t < u.size(); ++t) {
-      if(!(u[t] > 0)) return std::numeric_limits<double>::infinity();
-      U += u[t];
-      K += m_c[t] / u[t];
-    }
-    return 1 + U * K;
-  }
-
-  /// ∂E/∂u_t for every face (u all positive).
-  void derivatives(const std::vector<double>& u, std::vector<double>& dE) const
-  {
-    double U = 0, K = 0;
-    for(std::size_t t = 0; t < u.size(); ++t) { U += u[t]; K += m_c[t] / u[t]; }
-    dE.resize(u.size());
-    for(std::size_t t = 0; t < u.size(); ++t) dE[t] = K - U * m_c[t] / (u[t] * u[t]);
-  }
-
-  /// c_t = (A_t / Σ A)².
-  double weight(std::size_t t) const { return m_c[t]; }
-
-  /// The diagonal of the Hessian, ∂²E/∂u_t² ≈ 2 U c_t / u_t³ (the
-  /// O(1/U²) terms of the global coupling through U dropped: they are a
-  /// factor F smaller), for the Gauss–Newton model of the spherical flow.
-  void curvatures(const std::vector<double>& u, std::vector<double>& w) const
-  {
-    double U = 0;
-    for(double x : u) U += x;
-    w.resize(u.size());
-    for(std::size_t t = 0; t < u.size(); ++t) w[t] = 2 * U * m_c[t] / (u[t] * u[t] * u[t]);
-  }
-
-private:
-  std::vector<double> m_c;
-};
 
 /// ∂E/∂p for a planar mesh from per-face ∂E/∂u_t:
 /// ∂u/∂p_k = ½ (y_{k+1} − y_{k+2}, x_{k+2} − x_{k+1}).
@@ -173,11 +122,26 @@ inline double smallest_critical_step(const std::vector<Vec2>& uv, const std::vec
   return best;
 }
 
+/// Internal knobs of the planar certified flow.
+struct Planar_flow_settings
+{
+  /// Vertex-by-vertex relaxation sweeps after each step once D_area is
+  /// below `relaxation_below` (planar_relaxation.h); a sweep that moves no
+  /// vertex ends them. Measured (tolerance 5e-4, a region scaled by 16):
+  /// mushroom 379 → 47 iterations and a share off by −1.9% → −0.09%,
+  /// lion-head 363 → 32 iterations; at the default tolerance lion-head and
+  /// mannequin-devil take less time than without (from D_area 177 and 158;
+  /// sweeping from the start instead doubled their time).
+  std::size_t relaxation_sweeps = 10;
+  double relaxation_below = 2.1;
+};
+
 /// Runs the certified flow from the positively oriented `uv` (modified in
 /// place; always a certified map not worse than the start).
 template <class EigenSolver>
 Flow_outcome certified_disk_flow(const Disk_problem& P, std::vector<Vec2>& uv, Boundary_curve& curve,
-                                 const Discrete_lie_flow_options& opt, EigenSolver& eigen_solver)
+                                 const Discrete_lie_flow_options& opt, EigenSolver& eigen_solver,
+                                 const Planar_flow_settings& settings = Planar_flow_settings())
 {
   typedef std::chrono::steady_clock Clock;
   const Clock::time_point start = Clock::now();
@@ -197,6 +161,8 @@ Flow_outcome certified_disk_flow(const Disk_problem& P, std::vector<Vec2>& uv, B
 
   std::vector<double> E_history(1, E);
   double lambda_prev = infinite_step();
+  Vertex_faces around(0, std::vector<Face>());
+  std::vector<char> movable;
   out.stop_reason = Discrete_lie_flow_stop_reason::ITERATION_CAP;
   for(std::size_t it = 1; it <= opt.max_iterations; ++it) {
     if(E - 2 <= opt.tolerance) { out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED; break; }
@@ -266,6 +232,23 @@ Flow_outcome certified_disk_flow(const Disk_problem& P, std::vector<Vec2>& uv, B
     uv.swap(trial);
     u.swap(u_trial);
     E = E_trial;
+    if(settings.relaxation_sweeps > 0 && E < settings.relaxation_below) {
+      // The global step moved the smooth modes; sweeps take the grid-scale ones.
+      const Clock::time_point swept = Clock::now();
+      if(around.first.size() != n + 1) {
+        around = Vertex_faces(n, P.faces);
+        movable.assign(n, 1);
+        for(int b : P.boundary) movable[std::size_t(b)] = 0;
+      }
+      for(std::size_t k = 0; k < settings.relaxation_sweeps; ++k) {
+        const Relaxation_outcome r = relax_planar_vertices(P.faces, around, energy, mu, movable, uv, u);
+        out.rejected_by_exact_check += r.refused_by_exact_check;
+        if(r.moved == 0) break;
+      }
+      signed_areas_2(uv, P.faces, u); // drop the sweeps' incremental rounding
+      E = energy.value(u);
+      out.seconds_step += std::chrono::duration<double>(Clock::now() - swept).count();
+    }
     lambda_prev = lambda;
     out.iterations = it;
     out.final_d_area = E;

@@ -10,6 +10,7 @@
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/distortion.h>
 
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -41,6 +42,29 @@ struct Flow_outcome
   /// Time split of the iterations (seconds): assembly, factorisation + solve, step search.
   double seconds_assembly = 0, seconds_solve = 0, seconds_step = 0;
   std::vector<Discrete_lie_flow_iteration> history;
+};
+
+/// Faces around each vertex, with the corner the vertex occupies.
+struct Vertex_faces
+{
+  std::vector<std::size_t> first;              ///< CSR offsets, size n + 1
+  std::vector<std::pair<std::size_t, int> > of; ///< (face, corner)
+
+  Vertex_faces(std::size_t n, const std::vector<Face>& faces) : first(n + 1, 0)
+  {
+    for(const Face& t : faces) for(int k = 0; k < 3; ++k) ++first[std::size_t(t[k]) + 1];
+    for(std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
+    of.resize(first[n]);
+    std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+    for(std::size_t f = 0; f < faces.size(); ++f)
+      for(int k = 0; k < 3; ++k) of[fill[std::size_t(faces[f][k])]++] = std::make_pair(f, k);
+  }
+};
+
+/// What a relaxation sweep did (planar_relaxation.h, sphere_relaxation.h).
+struct Relaxation_outcome
+{
+  std::size_t moved = 0, refused_by_exact_check = 0;
 };
 
 /// Lumped vertex areas: out[i] = (1/3) Σ_{f ∋ i} value[f].

@@ -17,8 +17,9 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_SPHERE_RELAXATION_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_SPHERE_RELAXATION_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/area_barrier_energy.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certification.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certified_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_problem.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_gauss_newton.h>
 
 #include <array>
@@ -30,27 +31,6 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace dlf {
 
-/// Faces around each vertex, with the corner the vertex occupies.
-struct Vertex_faces
-{
-  std::vector<std::size_t> first;              ///< CSR offsets, size n + 1
-  std::vector<std::pair<std::size_t, int> > of; ///< (face, corner)
-
-  Vertex_faces(std::size_t n, const std::vector<Face>& faces) : first(n + 1, 0)
-  {
-    for(const Face& t : faces) for(int k = 0; k < 3; ++k) ++first[std::size_t(t[k]) + 1];
-    for(std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
-    of.resize(first[n]);
-    std::vector<std::size_t> fill(first.begin(), first.end() - 1);
-    for(std::size_t f = 0; f < faces.size(); ++f)
-      for(int k = 0; k < 3; ++k) of[fill[std::size_t(faces[f][k])]++] = std::make_pair(f, k);
-  }
-};
-
-struct Relaxation_outcome
-{
-  std::size_t moved = 0, refused_by_exact_check = 0;
-};
 
 /// Vertices of the faces whose area ratio r_t = (u_t / Σu) / √c_t is off by
 /// more than e^`threshold`: where a sweep has work to do (a sweep over every

@@ -1,0 +1,76 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The certified flows' energy, D_area as a barrier on the signed areas.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_AREA_BARRIER_ENERGY_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_AREA_BARRIER_ENERGY_H
+
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace dlf {
+
+/// The barrier energy in closed form. With u_t the signed domain areas,
+/// U = Σ u_t, c_t = (A_t / Σ A)², the area-weighted mean of r_t = (u_t/U)/(A_t/ΣA)
+/// is 1, hence E = Σ w_t (r_t + 1/r_t) = 1 + U Σ_t c_t / u_t and
+/// ∂E/∂u_t = Σ_s c_s/u_s − U c_t / u_t².
+class Area_barrier_energy
+{
+public:
+  explicit Area_barrier_energy(const std::vector<double>& target) : m_c(target.size())
+  {
+    double T = 0;
+    for(double a : target) T += a;
+    for(std::size_t t = 0; t < target.size(); ++t) m_c[t] = (target[t] / T) * (target[t] / T);
+  }
+
+  /// E(u), +∞ when a face is not positive.
+  double value(const std::vector<double>& u) const
+  {
+    double U = 0, K = 0;
+    for(std::size_t t = 0; t < u.size(); ++t) {
+      if(!(u[t] > 0)) return std::numeric_limits<double>::infinity();
+      U += u[t];
+      K += m_c[t] / u[t];
+    }
+    return 1 + U * K;
+  }
+
+  /// ∂E/∂u_t for every face (u all positive).
+  void derivatives(const std::vector<double>& u, std::vector<double>& dE) const
+  {
+    double U = 0, K = 0;
+    for(std::size_t t = 0; t < u.size(); ++t) { U += u[t]; K += m_c[t] / u[t]; }
+    dE.resize(u.size());
+    for(std::size_t t = 0; t < u.size(); ++t) dE[t] = K - U * m_c[t] / (u[t] * u[t]);
+  }
+
+  /// c_t = (A_t / Σ A)².
+  double weight(std::size_t t) const { return m_c[t]; }
+
+  /// The diagonal of the Hessian, ∂²E/∂u_t² ≈ 2 U c_t / u_t³ (the
+  /// O(1/U²) terms of the global coupling through U dropped: they are a
+  /// factor F smaller), for the Gauss–Newton model of the spherical flow.
+  void curvatures(const std::vector<double>& u, std::vector<double>& w) const
+  {
+    double U = 0;
+    for(double x : u) U += x;
+    w.resize(u.size());
+    for(std::size_t t = 0; t < u.size(); ++t) w[t] = 2 * U * m_c[t] / (u[t] * u[t] * u[t]);
+  }
+
+private:
+  std::vector<double> m_c;
+};
+
+} // namespace dlf
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

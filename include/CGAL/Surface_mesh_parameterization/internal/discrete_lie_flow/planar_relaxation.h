@@ -1,0 +1,114 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Vertex-by-vertex relaxation of the planar certified flow's energy: the
+// planar counterpart of sphere_relaxation.h (read there why). A global step
+// is as long as its stiffest face allows; with a density, a few stiff faces
+// far from the region cap every step while the region's deficit shrinks by
+// 0.01% per iteration (mushroom.off, factor 16). One vertex at a time, each
+// face only limits its own corners. Interior vertices only: boundary
+// vertices keep to their curve through the global steps.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_PLANAR_RELAXATION_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_PLANAR_RELAXATION_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/area_barrier_energy.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certification.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_problem.h>
+
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace dlf {
+
+/// One sweep over the vertices with `movable[v]` of E = 1 + U Σ c_t/u_t on
+/// the signed areas u of `uv` (kept up to date, as `uv`).
+inline Relaxation_outcome relax_planar_vertices(const std::vector<Face>& faces, const Vertex_faces& around,
+                                                const Area_barrier_energy& energy, double mu,
+                                                const std::vector<char>& movable,
+                                                std::vector<Vec2>& uv, std::vector<double>& u)
+{
+  Relaxation_outcome out;
+  double U = 0, K = 0;
+  for(std::size_t t = 0; t < u.size(); ++t) { U += u[t]; K += energy.weight(t) / u[t]; }
+  std::vector<double> u_new;
+  for(std::size_t v = 0; v < uv.size(); ++v) {
+    const std::size_t begin = around.first[v], end = around.first[v + 1];
+    if(!movable[v] || begin == end) continue;
+    // ∂u_t/∂p_v = ½ (y_r − y_s, x_s − x_r) for the face (v, r, s).
+    double g0 = 0, g1 = 0, h00 = 0, h01 = 0, h11 = 0;
+    for(std::size_t i = begin; i < end; ++i) {
+      const std::size_t f = around.of[i].first;
+      const int k = around.of[i].second;
+      const Vec2& r = uv[std::size_t(faces[f][(k + 1) % 3])];
+      const Vec2& s = uv[std::size_t(faces[f][(k + 2) % 3])];
+      const double x = 0.5 * (r[1] - s[1]), y = 0.5 * (s[0] - r[0]);
+      const double c = energy.weight(f);
+      const double dE = K - U * c / (u[f] * u[f]);
+      const double w = 2 * U * c / (u[f] * u[f] * u[f]);
+      g0 += dE * x; g1 += dE * y;
+      h00 += w * x * x; h01 += w * x * y; h11 += w * y * y;
+    }
+    const double reg = 1e-9 * (h00 + h11);
+    h00 += reg; h11 += reg;
+    const double det = h00 * h11 - h01 * h01;
+    if(!(det > 0)) continue;
+    const Vec2 d = {{ -(h11 * g0 - h01 * g1) / det, -(h00 * g1 - h01 * g0) / det }};
+    const double slope = g0 * d[0] + g1 * d[1];
+    if(!(slope < 0)) continue;
+    // The area of (v + λd, r, s) is linear in λ: exact critical root.
+    double lambda_crit = infinite_step();
+    for(std::size_t i = begin; i < end; ++i) {
+      const std::size_t f = around.of[i].first;
+      const int k = around.of[i].second;
+      const Vec2& r = uv[std::size_t(faces[f][(k + 1) % 3])];
+      const Vec2& s = uv[std::size_t(faces[f][(k + 2) % 3])];
+      const double rate = 0.5 * (d[0] * (r[1] - s[1]) + d[1] * (s[0] - r[0]));
+      if(rate < 0) lambda_crit = (std::min)(lambda_crit, -u[f] / rate);
+    }
+    double lambda = (std::min)(1., mu * lambda_crit);
+    const double E = 1 + U * K;
+    u_new.resize(end - begin);
+    for(int halvings = 0; halvings < 8; ++halvings, lambda *= 0.5) {
+      const Vec2 moved = {{ uv[v][0] + lambda * d[0], uv[v][1] + lambda * d[1] }};
+      double dU = 0, dK = 0;
+      bool positive = true;
+      for(std::size_t i = begin; i < end && positive; ++i) {
+        const std::size_t f = around.of[i].first;
+        const int k = around.of[i].second;
+        const double un = signed_area_2(moved, uv[std::size_t(faces[f][(k + 1) % 3])], uv[std::size_t(faces[f][(k + 2) % 3])]);
+        if(!(un > 0)) { positive = false; break; }
+        u_new[i - begin] = un;
+        dU += un - u[f];
+        dK += energy.weight(f) * (1 / un - 1 / u[f]);
+      }
+      if(!positive) continue;
+      if(!(1 + (U + dU) * (K + dK) <= E + 1e-4 * lambda * slope)) continue;
+      bool certified = true;
+      for(std::size_t i = begin; i < end && certified; ++i) {
+        const std::size_t f = around.of[i].first;
+        const int k = around.of[i].second;
+        certified = exact_orientation_2(moved, uv[std::size_t(faces[f][(k + 1) % 3])],
+                                        uv[std::size_t(faces[f][(k + 2) % 3])]) == CGAL::POSITIVE;
+      }
+      if(!certified) { ++out.refused_by_exact_check; continue; }
+      uv[v] = moved;
+      for(std::size_t i = begin; i < end; ++i) u[around.of[i].first] = u_new[i - begin];
+      U += dU;
+      K += dK;
+      ++out.moved;
+      break;
+    }
+  }
+  return out;
+}
+
+} // namespace dlf
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
