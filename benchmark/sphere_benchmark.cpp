@@ -317,7 +317,7 @@ int main(int argc, char** argv)
     ("meshes", po::value<std::string>(&meshes_arg)->default_value(""),
      "comma-separated mesh list (default: every *.off of <dir>/meshes that is a closed, connected, genus-0 triangle mesh "
      "with at least 200 faces)")
-    ("large", po::value<std::string>(&large_arg)->default_value("bear.off+loop1,armadillo.off+loop1"),
+    ("large", po::value<std::string>(&large_arg)->default_value("bear.off+loop1"),
      "comma-separated meshes of the large section")
     ("no-large", "skip the large section")
     ("list", "print the meshes that would be run, and exit")
