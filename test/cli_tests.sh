@@ -66,6 +66,15 @@ check "sphere: converged (d_area and mean |log r| reached)" equals "$(json_get s
 check "sphere: mean |log area ratio| <= the default 0.02" python3 -c \
   "import json, sys; sys.exit(not json.load(open('sph.json'))['final']['log_area_ratio']['mean_abs'] <= 0.02)"
 check "sphere report: the log-area tolerance" equals "$(json_get sph.json options log_area_tolerance)" 0.02
+# measure control on the sphere: a region's share of the sphere's area
+"$DLF" sphere "$MESHES/sphere.off" --roi-ball 0 0 1 0.8 --factor 4 --report sph_roi.json -q 2> sph_roi.err
+check "sphere --roi-ball: exit 0" equals "$?" 0
+check "sphere --roi-ball: no warning" equals "$(wc -c < sph_roi.err)" 0
+check "sphere --roi-ball: the region reached its share within 1%" python3 -c \
+  "import json, sys; r = json.load(open('sph_roi.json'))['regions'][0]; sys.exit(not (r['reached'] and abs(r['relative_error']) <= 0.01 and r['factor'] == 4))"
+awk '!/^#/ && NF' "$MESHES/sphere.off" | sed -n 2p | awk '{ for(i = 0; i < $2; ++i) print (i % 2 ? 1 : 3) }' > sph_rho.txt
+"$DLF" sphere "$MESHES/sphere.off" --density sph_rho.txt --report sph_rho.json -q
+check "sphere --density per face: density in the report" equals "$(json_get sph_rho.json density max)" 3.0
 "$DLF" sphere "$MESHES/sphere.off" --log-area-tolerance 0 --report sph0.json -q
 check "sphere: --log-area-tolerance 0 lets d_area alone decide" awk -v a="$(json_get sph0.json "" iterations)" -v b="$(json_get sph.json "" iterations)" 'BEGIN { exit !(a <= b) }'
 
@@ -348,6 +357,9 @@ expect_error "missing INPUT" 1 "missing INPUT" disk
 expect_error "unknown command" 1 "unknown command" frobnicate input.off
 expect_error "sphere: torus refused" 1 "genus" sphere "$MESHES/pipe.off"
 expect_error "sphere: negative --log-area-tolerance" 1 "log-area-tolerance" sphere "$MESHES/sphere.off" --log-area-tolerance -1
+expect_error "sphere: --roi-ball without --factor" 1 "factor" sphere "$MESHES/sphere.off" --roi-ball 0 0 1 0.8
+expect_error "sphere: --density and --roi exclude each other" 1 "exclude" sphere "$MESHES/sphere.off" --density sph_rho.txt --roi-ball 0 0 1 0.8 --factor 2
+expect_error "sphere: --band without a region" 1 "band" sphere "$MESHES/sphere.off" --band 0.1
 expect_error "sphere: open mesh refused" 1 "ERROR_NOT_GENUS_0" sphere "$NEF"
 
 OUTPUTS="-o out/o.obj --svg out/l.svg" expect_error "--texture not an .obj" 1 "ending in .obj" disk input.off --texture out/t.png

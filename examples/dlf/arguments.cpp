@@ -339,4 +339,11 @@ bool parse_score_arguments(const std::vector<std::string>& args, Score_settings&
   return true;
 }
 
+std::vector<std::string> glue_region_balls(const std::vector<std::string>& args) { return glue_roi_ball(args); }
+
+std::vector<Region_option> regions_in_order(const std::vector<boost::program_options::option>& ordered)
+{
+  return regions_of(ordered);
+}
+
 } // namespace dlf_cli

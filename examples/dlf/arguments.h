@@ -9,6 +9,8 @@
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 
+#include <boost/program_options/option.hpp>
+
 #include <array>
 #include <ostream>
 #include <string>
@@ -63,6 +65,14 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
 bool parse_score_arguments(const std::vector<std::string>& args, Score_settings& settings);
 
 void print_main_help(std::ostream& out);
+
+/// For the commands that take `--roi-ball X Y Z R` (whose values may look
+/// like options): the arguments with each ball glued into one value.
+std::vector<std::string> glue_region_balls(const std::vector<std::string>& args);
+
+/// The regions of `--roi` / `--roi-ball` with the k-th `--factor`, in
+/// command-line order; throws `Cli_error` on a missing or bad factor.
+std::vector<Region_option> regions_in_order(const std::vector<boost::program_options::option>& ordered);
 
 /// True for the fixed-border initial maps (convex border: circle or square).
 inline bool has_fixed_border(const std::string& init) { return init == "tutte" || init == "mvc" || init == "dcp"; }

@@ -8,6 +8,7 @@
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
+#include "density_input.h"
 #include "metrics.h"
 #include "mesh_input.h"
 #include "output_files.h"
@@ -23,7 +24,9 @@
 #include <boost/program_options.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iomanip>
 #include <iostream>
@@ -51,6 +54,8 @@ const char* sphere_help =
   "  dlf sphere bunny.off --tolerance 1e-3 --verbose\n"
   "  dlf sphere cow.off --svg cow_sphere.svg --plot-convergence cow_conv.svg\n"
   "      the sphere seen from +z and -z, coloured by area ratio; the convergence plot\n"
+  "  dlf sphere sphere.off --roi-ball 0 0 1 0.8 --factor 4 --report roi.json\n"
+  "      measure control: the faces whose centroid lies in the ball get 4 times their share\n"
   "\n"
   "Progress: one line per iteration (iteration, step, residual, d_area, elapsed), rewritten in\n"
   "place when stdout is a terminal, plain lines otherwise; -q silences it, -v adds details.\n";
@@ -61,6 +66,7 @@ struct Sphere_settings
   SMP::Discrete_lie_flow_options options;
   Verbosity verbosity = Verbosity::NORMAL;
   bool history_in_report = false;
+  Disk_settings density; ///< only its density_file, regions and band are used
 };
 
 bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_settings& s)
@@ -82,6 +88,16 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
     ("max-iterations", po::value<std::size_t>(&s.options.max_iterations), "iteration cap (default 500)")
     ("mu", po::value<double>(&s.options.mu), "fraction of the critical step, in (0, 1) (default 0.8)")
     ("history", "per-iteration history in the report")
+    ("density", po::value<std::string>(&s.density.density_file)->value_name("FILE"),
+     "measure control: a density > 0 per face, or per vertex, as for dlf disk")
+    ("roi", po::value<std::vector<std::string> >()->composing()->value_name("FILE"),
+     "a region of interest: a CGAL selection file; needs --factor")
+    ("roi-ball", po::value<std::vector<std::string> >()->composing()->value_name("X Y Z R"),
+     "a region of interest: the faces whose centroid lies in this ball; needs --factor")
+    ("factor", po::value<std::vector<double> >()->composing()->value_name("F"),
+     "density of the k-th region (> 0); overlapping regions multiply")
+    ("band", po::value<double>(&s.density.band)->value_name("W"),
+     "width (3D length) of a transition from each region's factor to 1 around it")
     ("quiet,q", "print nothing on success (no progress, no summary)")
     ("verbose,v", "progress with the step's details, never overwritten");
   po::options_description all;
@@ -90,9 +106,13 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
   po::positional_options_description positional;
   positional.add("input", -1);
   po::variables_map vm;
+  std::vector<po::option> ordered;
   try {
     const int style = po::command_line_style::default_style & ~po::command_line_style::allow_guessing;
-    po::store(po::command_line_parser(args).options(all).positional(positional).style(style).run(), vm);
+    const po::parsed_options parsed =
+      po::command_line_parser(glue_region_balls(args)).options(all).positional(positional).style(style).run();
+    ordered = parsed.options;
+    po::store(parsed, vm);
     po::notify(vm);
   } catch(const po::error& e) {
     throw Cli_error(std::string(e.what()) + " (see 'dlf sphere --help')");
@@ -112,8 +132,31 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
   if(vm.count("quiet")) s.verbosity = Verbosity::QUIET;
   if(vm.count("verbose")) s.verbosity = Verbosity::VERBOSE;
   s.history_in_report = vm.count("history") > 0;
+  s.density.regions = regions_in_order(ordered);
+  if(!s.density.density_file.empty() && !s.density.regions.empty())
+    throw Cli_error("--density and --roi/--roi-ball exclude each other");
+  if(vm.count("band") && s.density.regions.empty()) throw Cli_error("--band applies to --roi and --roi-ball only");
+  if(!(s.density.band >= 0) || !std::isfinite(s.density.band)) throw Cli_error("--band must be a number >= 0");
   s.options.record_history = s.history_in_report || !s.convergence_svg.empty();
   return true;
+}
+
+// The share of the sphere's (flat) area each region got.
+void measure_regions_on_sphere(const Indexed_mesh& mesh, const std::vector<Vec3>& p, Density_setup& setup)
+{
+  namespace D = SMP::internal::dlf;
+  std::vector<double> area(mesh.faces.size());
+  double total = 0;
+  for(std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const Triangle& t = mesh.faces[f];
+    area[f] = D::signed_area_sphere(p[std::size_t(t[0])], p[std::size_t(t[1])], p[std::size_t(t[2])]);
+    total += area[f];
+  }
+  for(Density_region& r : setup.regions) {
+    double a = 0;
+    for(int f : r.faces) a += area[std::size_t(f)];
+    r.achieved = a / total;
+  }
 }
 
 } // namespace
@@ -138,6 +181,8 @@ int sphere_command(const std::vector<std::string>& args)
     if(mesh.add_face(Mesh::Vertex_index(t[0]), Mesh::Vertex_index(t[1]), Mesh::Vertex_index(t[2])) == Mesh::null_face())
       throw Cli_error(s.input + ": face " + std::to_string(f) + " makes the mesh non-manifold");
   }
+  Density_setup density = make_density(input, s.density);
+  s.options.face_density = density.face_density; // faces in input order, as the Surface_mesh keeps them
   Progress progress(s.verbosity, false);
   s.options.callback = progress.callback();
 
@@ -172,6 +217,7 @@ int sphere_command(const std::vector<std::string>& args)
   std::vector<Vec3> points;
   if(ok)
     for(Mesh::Vertex_index v : mesh.vertices()) points.push_back({{ sphere[v].x(), sphere[v].y(), sphere[v].z() }});
+  if(ok) measure_regions_on_sphere(input, points, density);
   if(ok && !s.svg.empty())
     outputs.write(s.svg, [&](std::ostream& o) { write_svg_sphere(o, input, points, caption.str()); });
   // The initial map is not kept by the library: the result only.
@@ -196,6 +242,25 @@ int sphere_command(const std::vector<std::string>& args)
     j["seconds"] = { { "initial", R.seconds_initial }, { "flow", R.seconds_flow }, { "total", total } };
     j["options"] = { { "tolerance", s.options.tolerance }, { "log_area_tolerance", s.options.log_area_tolerance },
                      { "max_iterations", s.options.max_iterations } };
+    if(density.source != "none") {
+      json d;
+      d["source"] = density.source;
+      if(!s.density.density_file.empty()) d["file"] = s.density.density_file;
+      if(!density.regions.empty()) d["band"] = s.density.band;
+      d["min"] = *std::min_element(density.face_density.begin(), density.face_density.end());
+      d["max"] = *std::max_element(density.face_density.begin(), density.face_density.end());
+      j["density"] = d;
+    }
+    if(!density.regions.empty()) {
+      json regions = json::array();
+      for(const Density_region& r : density.regions)
+        regions.push_back({ { "name", r.name }, { "factor", r.factor }, { "faces", r.faces.size() },
+                            { "prescribed_fraction", r.prescribed },
+                            { "achieved_fraction", ok ? json(r.achieved) : json(nullptr) },
+                            { "relative_error", ok ? json(r.relative_error()) : json(nullptr) },
+                            { "reached", ok ? json(std::abs(r.relative_error()) <= region_share_tolerance) : json(nullptr) } });
+      j["regions"] = regions;
+    }
     j["initial"] = ok ? metrics_to_json(R.initial_metrics) : json(nullptr);
     j["final"] = ok ? metrics_to_json(R.final_metrics) : json(nullptr);
     j["puncture_face"] = R.puncture_face;
@@ -221,8 +286,16 @@ int sphere_command(const std::vector<std::string>& args)
                 << "  inverted faces " << R.final_metrics.inverted_faces << "\n"
                 << std::setprecision(3) << "  seconds: initial map " << R.seconds_initial << ", flow " << R.seconds_flow
                 << ", total " << total << "\n";
+    for(const Density_region& r : density.regions)
+      std::cout << "  region " << r.name << ": factor " << r.factor << ", " << r.faces.size()
+                << " faces, share of the sphere " << r.achieved << " (prescribed " << r.prescribed << ")\n";
     for(const std::string& w : outputs.committed()) std::cout << "  wrote " << w << "\n";
   }
+  // A region that missed its share is not an error (the map is valid), but never silent.
+  for(const Density_region& r : density.regions)
+    if(ok && !(std::abs(r.relative_error()) <= region_share_tolerance))
+      std::cerr << "dlf: warning: region " << r.name << " got " << r.achieved << " of the sphere's area, prescribed "
+                << r.prescribed << "\n";
   if(!ok)
     throw Cli_error(s.input + ": " + SMP::discrete_lie_flow_error_name(status) + ": " + R.message,
                     input_error ? EXIT_BAD_INPUT : EXIT_FLOW_ERROR);
