@@ -61,6 +61,34 @@ struct Vertex_faces
   }
 };
 
+/// The 2 × 2 Gauss–Newton model of one vertex's move in a relaxation sweep
+/// (planar_relaxation.h, sphere_relaxation.h): gradient g and matrix
+/// Σ w ∇u ∇uᵀ, accumulated face by face in the vertex's own frame.
+struct Vertex_model
+{
+  double g0 = 0, g1 = 0, h00 = 0, h01 = 0, h11 = 0;
+
+  /// A face with ∂E/∂u = dE, curvature w and ∂u/∂(vertex) = (x, y).
+  void add(double dE, double w, double x, double y)
+  {
+    g0 += dE * x; g1 += dE * y;
+    h00 += w * x * x; h01 += w * x * y; h11 += w * y * y;
+  }
+
+  /// The (slightly regularised) Newton step x and its slope gᵀx; false
+  /// unless it is a descent direction.
+  bool step(double& x0, double& x1, double& slope) const
+  {
+    const double reg = 1e-9 * (h00 + h11), a = h00 + reg, c = h11 + reg;
+    const double det = a * c - h01 * h01;
+    if(!(det > 0)) return false;
+    x0 = -(c * g0 - h01 * g1) / det;
+    x1 = -(a * g1 - h01 * g0) / det;
+    slope = g0 * x0 + g1 * x1;
+    return slope < 0;
+  }
+};
+
 /// What a relaxation sweep did (planar_relaxation.h, sphere_relaxation.h).
 struct Relaxation_outcome
 {

@@ -39,26 +39,18 @@ inline Relaxation_outcome relax_planar_vertices(const std::vector<Face>& faces, 
     const std::size_t begin = around.first[v], end = around.first[v + 1];
     if(!movable[v] || begin == end) continue;
     // ∂u_t/∂p_v = ½ (y_r − y_s, x_s − x_r) for the face (v, r, s).
-    double g0 = 0, g1 = 0, h00 = 0, h01 = 0, h11 = 0;
+    Vertex_model model;
     for(std::size_t i = begin; i < end; ++i) {
       const std::size_t f = around.of[i].first;
       const int k = around.of[i].second;
       const Vec2& r = uv[std::size_t(faces[f][(k + 1) % 3])];
       const Vec2& s = uv[std::size_t(faces[f][(k + 2) % 3])];
-      const double x = 0.5 * (r[1] - s[1]), y = 0.5 * (s[0] - r[0]);
       const double c = energy.weight(f);
-      const double dE = K - U * c / (u[f] * u[f]);
-      const double w = 2 * U * c / (u[f] * u[f] * u[f]);
-      g0 += dE * x; g1 += dE * y;
-      h00 += w * x * x; h01 += w * x * y; h11 += w * y * y;
+      model.add(K - U * c / (u[f] * u[f]), 2 * U * c / (u[f] * u[f] * u[f]), 0.5 * (r[1] - s[1]), 0.5 * (s[0] - r[0]));
     }
-    const double reg = 1e-9 * (h00 + h11);
-    h00 += reg; h11 += reg;
-    const double det = h00 * h11 - h01 * h01;
-    if(!(det > 0)) continue;
-    const Vec2 d = {{ -(h11 * g0 - h01 * g1) / det, -(h00 * g1 - h01 * g0) / det }};
-    const double slope = g0 * d[0] + g1 * d[1];
-    if(!(slope < 0)) continue;
+    Vec2 d;
+    double slope;
+    if(!model.step(d[0], d[1], slope)) continue;
     // The area of (v + λd, r, s) is linear in λ: exact critical root.
     double lambda_crit = infinite_step();
     for(std::size_t i = begin; i < end; ++i) {

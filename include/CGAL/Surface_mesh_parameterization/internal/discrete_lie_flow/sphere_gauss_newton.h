@@ -30,24 +30,27 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace dlf {
 
-/// An orthonormal basis (e1, e2) of the tangent plane at every unit vector.
+/// An orthonormal basis (e1, e2) of the tangent plane at the unit vector q:
+/// the axis least aligned with q, projected (never close to parallel), and q × e1.
+inline void tangent_frame(const Vec3& q, Vec3& e1, Vec3& e2)
+{
+  const int a = (std::abs(q[0]) <= std::abs(q[1]) && std::abs(q[0]) <= std::abs(q[2])) ? 0
+                : (std::abs(q[1]) <= std::abs(q[2]) ? 1 : 2);
+  Vec3 t{{ 0, 0, 0 }};
+  t[std::size_t(a)] = 1;
+  const double s = dot(t, q);
+  e1 = normalized(Vec3{{ t[0] - s * q[0], t[1] - s * q[1], t[2] - s * q[2] }});
+  e2 = cross(q, e1);
+}
+
+/// The tangent frames at every unit vector.
 struct Tangent_frames
 {
   std::vector<Vec3> e1, e2;
 
   explicit Tangent_frames(const std::vector<Vec3>& p) : e1(p.size()), e2(p.size())
   {
-    for(std::size_t i = 0; i < p.size(); ++i) {
-      // The axis least aligned with p, projected: never close to parallel.
-      const Vec3& q = p[i];
-      const int a = (std::abs(q[0]) <= std::abs(q[1]) && std::abs(q[0]) <= std::abs(q[2])) ? 0
-                    : (std::abs(q[1]) <= std::abs(q[2]) ? 1 : 2);
-      Vec3 t{{ 0, 0, 0 }};
-      t[std::size_t(a)] = 1;
-      const double s = dot(t, q);
-      e1[i] = normalized(Vec3{{ t[0] - s * q[0], t[1] - s * q[1], t[2] - s * q[2] }});
-      e2[i] = cross(q, e1[i]);
-    }
+    for(std::size_t i = 0; i < p.size(); ++i) tangent_frame(p[i], e1[i], e2[i]);
   }
 
   std::array<double, 2> coordinates(std::size_t i, const Vec3& v) const { return {{ dot(e1[i], v), dot(e2[i], v) }}; }

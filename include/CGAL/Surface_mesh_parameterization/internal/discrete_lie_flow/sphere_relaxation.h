@@ -66,32 +66,17 @@ inline Relaxation_outcome relax_sphere_vertices(const std::vector<Face>& faces, 
     if(begin == end) continue;
     // Tangent frame at v, gradient and 2 × 2 Gauss–Newton matrix of E in it.
     const Vec3& q = p[v];
-    const int a = (std::abs(q[0]) <= std::abs(q[1]) && std::abs(q[0]) <= std::abs(q[2])) ? 0
-                  : (std::abs(q[1]) <= std::abs(q[2]) ? 1 : 2);
-    Vec3 axis{{ 0, 0, 0 }};
-    axis[std::size_t(a)] = 1;
-    const double sa = dot(axis, q);
-    const Vec3 e1 = normalized(Vec3{{ axis[0] - sa * q[0], axis[1] - sa * q[1], axis[2] - sa * q[2] }});
-    const Vec3 e2 = cross(q, e1);
-    double g0 = 0, g1 = 0, h00 = 0, h01 = 0, h11 = 0;
+    Vec3 e1, e2;
+    tangent_frame(q, e1, e2);
+    Vertex_model model;
     for(std::size_t i = begin; i < end; ++i) {
       const std::size_t f = around.of[i].first;
-      const int k = around.of[i].second;
-      const Vec3 G = barrier_area_gradients(p, faces[f], h0)[std::size_t(k)];
-      const double x = dot(e1, G), y = dot(e2, G);
+      const Vec3 G = barrier_area_gradients(p, faces[f], h0)[std::size_t(around.of[i].second)];
       const double c = energy.weight(f);
-      const double dE = K - U * c / (u[f] * u[f]);
-      const double w = 2 * U * c / (u[f] * u[f] * u[f]);
-      g0 += dE * x; g1 += dE * y;
-      h00 += w * x * x; h01 += w * x * y; h11 += w * y * y;
+      model.add(K - U * c / (u[f] * u[f]), 2 * U * c / (u[f] * u[f] * u[f]), dot(e1, G), dot(e2, G));
     }
-    const double reg = 1e-9 * (h00 + h11);
-    h00 += reg; h11 += reg;
-    const double det = h00 * h11 - h01 * h01;
-    if(!(det > 0)) continue;
-    const double x0 = -(h11 * g0 - h01 * g1) / det, x1 = -(h00 * g1 - h01 * g0) / det;
-    const double slope = g0 * x0 + g1 * x1;
-    if(!(slope < 0)) continue;
+    double x0, x1, slope;
+    if(!model.step(x0, x1, slope)) continue;
     const Vec3 d = {{ x0 * e1[0] + x1 * e2[0], x0 * e1[1] + x1 * e2[1], x0 * e1[2] + x1 * e2[2] }};
     // Exact critical root: det[q + λd, r, s] = det[q, r, s] + λ d·(r × s).
     double lambda_crit = infinite_step();
