@@ -584,9 +584,14 @@ json run_dlf(const std::string& dlf, const Case& c, const std::string& file, con
              const std::string& mode, double timeout)
 {
   const std::string out = dir + "/out.obj", rep = dir + "/report.json", err = dir + "/stderr.txt";
-  fs::remove(out); fs::remove(rep);
+  const std::string domain = dir + "/domain.obj";
+  fs::remove(out); fs::remove(rep); fs::remove(domain);
   std::vector<std::string> argv = { dlf, c.kind == "sphere" ? "sphere" : "disk", file, "-o", out, "--report", rep };
-  if(c.kind == "disk" && mode == "paper") { argv.push_back("--mode"); argv.push_back("paper"); }
+  // The paper mode certifies its flowing (flipped) triangulation and reports
+  // the caller's triangles that fold (DESIGN.md): check the former.
+  const bool paper = c.kind == "disk" && mode == "paper";
+  if(paper) for(const char* a : { "--mode", "paper", "--domain-mesh" }) argv.push_back(a);
+  if(paper) argv.push_back(domain);
   const Proc p = run_command(argv, timeout, err);
   json r;
   r["exit"] = p.code;
@@ -613,7 +618,15 @@ json run_dlf(const std::string& dlf, const Case& c, const std::string& file, con
       std::vector<std::array<int, 3> > F;
       if(!read_obj(out, v, vt, F)) r["unreadable_output"] = true;
       else {
-        const Map_check mc = c.kind == "sphere" ? check_sphere(v, F) : check_planar(vt, v, F);
+        Map_check mc = c.kind == "sphere" ? check_sphere(v, F) : check_planar(vt, v, F);
+        if(paper) {
+          r["caller_folds"] = mc.inverted + mc.degenerate; // information, not a violation
+          std::vector<P3> dv;
+          std::vector<std::array<double, 2> > dvt;
+          std::vector<std::array<int, 3> > dF;
+          if(!read_obj(domain, dv, dvt, dF)) r["unreadable_output"] = true;
+          else mc = check_planar(dvt, dv, dF);
+        }
         if(c.kind == "sphere") {
           // the sphere contract is stricter: every face positive (det[p, q, r] > 0)
           r["inverted"] = mc.mirrored ? F.size() - mc.inverted - mc.degenerate : mc.inverted;
@@ -776,14 +789,18 @@ json run_api(const Case& c, const std::string& file)
   if(e == SMP::OK) {
     json m = check_sm_uv(sm, uv, bhd);
     r.update(m);
-    // the library promises positively oriented output, so mirrored counts as inverted
-    std::size_t neg = 0;
+    // The library keeps the orientation of the initial map (a clockwise
+    // start gives a clockwise result, every face the same way): count the
+    // faces against the majority, and the flat ones.
+    std::size_t pos = 0, neg = 0, flat = 0;
     for(SM::Face_index f : faces(sm)) {
       const halfedge_descriptor h = halfedge(f, sm);
       const Point_2 &p = uv[source(h, sm)], &q = uv[target(h, sm)], &s = uv[target(next(h, sm), sm)];
-      if(CGAL::orientation(EK::Point_2(p.x(), p.y()), EK::Point_2(q.x(), q.y()), EK::Point_2(s.x(), s.y())) != CGAL::POSITIVE) ++neg;
+      const CGAL::Orientation o = CGAL::orientation(EK::Point_2(p.x(), p.y()), EK::Point_2(q.x(), q.y()), EK::Point_2(s.x(), s.y()));
+      if(o == CGAL::POSITIVE) ++pos; else if(o == CGAL::NEGATIVE) ++neg; else ++flat;
     }
-    r["inverted"] = neg;
+    r["inverted"] = std::min(pos, neg);
+    r["degenerate"] = flat;
   }
   return r;
 }
