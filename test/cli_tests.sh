@@ -409,6 +409,37 @@ awk '!(/^vt / && !dropped++)' nef.obj > short.obj
 check "score: too few vt is refused" bash -c "[ $? = 1 ] && grep -q 'vt' err.txt"
 check "no temporaries left" no_temporaries
 
+# --- sphere, paper mode --------------------------------------------------------
+unit_points() { awk '/^v / { r = sqrt($2*$2 + $3*$3 + $4*$4); if(r < 1 - 1e-12 || r > 1 + 1e-12) bad = 1 } END { exit bad }' "$1"; }
+"$DLF" sphere "$MESHES/ellipsoid.off" --mode paper -o sphp.obj --report sphp.json --domain-mesh sphp_flow.obj --history -q
+check "sphere --mode paper: exit 0" equals "$?" 0
+check "sphere --mode paper: status ok, mode in the report" equals \
+  "$(json_get sphp.json "" status) $(json_get sphp.json "" mode)" "ok paper"
+check "sphere --mode paper: a stop reason" grep -Eq '"stop_reason": "(converged|plateau|stalled|iteration_cap)"' sphp.json
+check "sphere --mode paper: flips counted" awk -v f="$(json_get sphp.json "" flips)" 'BEGIN { exit !(f > 0) }'
+check "sphere --mode paper: flowing triangulation never folded, Delaunay" equals \
+  "$(json_get sphp.json "" flowing_inverted_faces) $(json_get sphp.json "" flowing_non_delaunay_edges)" "0 0"
+check "sphere --mode paper: caller folds reported" grep -Eq '"caller_inverted_faces": [0-9]+' sphp.json
+check "sphere --mode paper: d_area on the flowing triangulation decreased" awk \
+  -v a="$(json_get sphp.json "" initial_domain_d_area)" -v b="$(json_get sphp.json "" domain_d_area)" 'BEGIN { exit !(b < a && b >= 2) }'
+check "sphere --mode paper: per-iteration flips in the history" grep -q '"flips": ' sphp.json
+check "sphere --mode paper: OBJ has the input faces" equals "$(count_lines sphp.obj 'f ')" \
+  "$(awk '!/^#/ && NF' "$MESHES/ellipsoid.off" | sed -n 2p | awk '{ print $2 }')"
+check "sphere --mode paper: --domain-mesh has as many faces" equals "$(count_lines sphp_flow.obj 'f ')" "$(count_lines sphp.obj 'f ')"
+check "sphere --mode paper: --domain-mesh points on the unit sphere" unit_points sphp_flow.obj
+check "sphere --mode paper: the flowing triangulation is not the input's" bash -c "! cmp -s <(grep '^f ' sphp.obj) <(grep '^f ' sphp_flow.obj)"
+"$DLF" sphere "$MESHES/ellipsoid.off" --mode paper --no-flips --report sphp_nf.json -q
+check "sphere --mode paper --no-flips: no flips, no caller folds" equals \
+  "$(json_get sphp_nf.json "" flips) $(json_get sphp_nf.json "" caller_inverted_faces) $(json_get sphp_nf.json options delaunay_flips)" "0 0 false"
+"$DLF" sphere "$MESHES/sphere.off" -o sphc.obj --report sphc.json --domain-mesh sphc_flow.obj -q
+check "sphere certified: mode in the report, no flips" equals "$(json_get sphc.json "" mode) $(json_get sphc.json "" flips)" "certified 0"
+check "sphere certified: --domain-mesh has the input faces" bash -c "cmp -s <(grep '^f ' sphc.obj) <(grep '^f ' sphc_flow.obj)"
+expect_error "sphere --mode: unknown value" 1 "invalid value 'fast' for --mode" sphere "$MESHES/sphere.off" --mode fast
+expect_error "sphere --no-flips needs paper mode" 1 "--no-flips applies to --mode paper only" sphere "$MESHES/sphere.off" --no-flips
+expect_error "sphere --literal-targets needs paper mode" 1 "--literal-targets applies to --mode paper only" sphere "$MESHES/sphere.off" --literal-targets
+expect_error "sphere --mode paper: a torus is refused" 1 "ERROR_NOT_GENUS_0" sphere "$MESHES/pipe.off" --mode paper
+check "no temporaries left (sphere paper)" no_temporaries
+
 echo
 if [ "$failures" -ne 0 ]; then
   echo "$failures of $checks checks FAILED"

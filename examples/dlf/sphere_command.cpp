@@ -25,6 +25,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -56,13 +57,16 @@ const char* sphere_help =
   "      the sphere seen from +z and -z, coloured by area ratio; the convergence plot\n"
   "  dlf sphere sphere.off --roi-ball 0 0 1 0.8 --factor 4 --report roi.json\n"
   "      measure control: the faces whose centroid lies in the ball get 4 times their share\n"
+  "  dlf sphere cow.off --mode paper --report paper.json --domain-mesh flipped.obj\n"
+  "      the paper's flow (edge flips; may fold the input triangles) and its flipped triangulation\n"
   "\n"
   "Progress: one line per iteration (iteration, step, residual, d_area, elapsed), rewritten in\n"
   "place when stdout is a terminal, plain lines otherwise; -q silences it, -v adds details.\n";
 
 struct Sphere_settings
 {
-  std::string input, output, report, svg, convergence_svg, histogram_svg;
+  std::string input, output, report, svg, convergence_svg, histogram_svg, domain_mesh;
+  std::string mode = "certified";
   SMP::Discrete_lie_flow_options options;
   Verbosity verbosity = Verbosity::NORMAL;
   bool history_in_report = false;
@@ -88,6 +92,12 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
     ("max-iterations", po::value<std::size_t>(&s.options.max_iterations), "iteration cap (default 500)")
     ("mu", po::value<double>(&s.options.mu), "fraction of the critical step, in (0, 1) (default 0.8)")
     ("history", "per-iteration history in the report")
+    ("mode", po::value<std::string>(&s.mode)->value_name("M")->default_value("certified"),
+     "certified: never folds the input triangles; paper: the paper's flow with edge flips")
+    ("domain-mesh", po::value<std::string>(&s.domain_mesh)->value_name("FLOW.obj"),
+     "write the sphere points with the final flowing triangulation (the input's in certified mode)")
+    ("literal-targets", "paper mode: lump the target areas once on the input triangles (Algorithm 1 read literally)")
+    ("no-flips", "paper mode: no Delaunay edge flips")
     ("density", po::value<std::string>(&s.density.density_file)->value_name("FILE"),
      "measure control: a density > 0 per face, or per vertex, as for dlf disk")
     ("roi", po::value<std::vector<std::string> >()->composing()->value_name("FILE"),
@@ -128,6 +138,15 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
   if(!(s.options.tolerance >= 0)) throw Cli_error("--tolerance must be >= 0");
   if(!(s.options.log_area_tolerance >= 0)) throw Cli_error("--log-area-tolerance must be >= 0");
   if(vm.count("mu") && !(s.options.mu > 0 && s.options.mu < 1)) throw Cli_error("--mu must be in (0, 1)");
+  if(s.mode != "certified" && s.mode != "paper")
+    throw Cli_error("invalid value '" + s.mode + "' for --mode (expected certified or paper)");
+  if(s.mode != "paper") {
+    if(vm.count("literal-targets")) throw Cli_error("--literal-targets applies to --mode paper only");
+    if(vm.count("no-flips")) throw Cli_error("--no-flips applies to --mode paper only");
+  }
+  s.options.mode = s.mode == "paper" ? SMP::Discrete_lie_flow_mode::PAPER : SMP::Discrete_lie_flow_mode::CERTIFIED;
+  s.options.lump_targets_on_flowing_faces = vm.count("literal-targets") == 0;
+  s.options.delaunay_flips = vm.count("no-flips") == 0;
   if(vm.count("quiet") && vm.count("verbose")) throw Cli_error("--quiet and --verbose exclude each other");
   if(vm.count("quiet")) s.verbosity = Verbosity::QUIET;
   if(vm.count("verbose")) s.verbosity = Verbosity::VERBOSE;
@@ -168,6 +187,7 @@ int sphere_command(const std::vector<std::string>& args)
   Output_files outputs;
   if(!s.output.empty()) outputs.declare(s.output, "-o");
   if(!s.report.empty()) outputs.declare(s.report, "--report");
+  if(!s.domain_mesh.empty()) outputs.declare(s.domain_mesh, "--domain-mesh");
   if(!s.svg.empty()) outputs.declare(s.svg, "--svg");
   if(!s.convergence_svg.empty()) outputs.declare(s.convergence_svg, "--plot-convergence");
   if(!s.histogram_svg.empty()) outputs.declare(s.histogram_svg, "--plot-histogram");
@@ -183,7 +203,7 @@ int sphere_command(const std::vector<std::string>& args)
   }
   Density_setup density = make_density(input, s.density);
   s.options.face_density = density.face_density; // faces in input order, as the Surface_mesh keeps them
-  Progress progress(s.verbosity, false);
+  Progress progress(s.verbosity, s.mode == "paper");
   s.options.callback = progress.callback();
 
   const auto start = std::chrono::steady_clock::now();
@@ -211,6 +231,19 @@ int sphere_command(const std::vector<std::string>& args)
         o << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
       }
       for(const Triangle& t : input.faces) o << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+    });
+  // The flowing triangulation: flipped in paper mode, the input's otherwise.
+  if(ok && !s.domain_mesh.empty())
+    outputs.write(s.domain_mesh, [&](std::ostream& o) {
+      o << "# dlf sphere " << s.input << ": mode " << s.mode << ", flowing triangulation\n" << std::setprecision(17);
+      for(Mesh::Vertex_index v : mesh.vertices()) {
+        const Kernel::Point_3& p = sphere[v];
+        o << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+      }
+      if(s.mode == "paper")
+        for(const std::array<int, 3>& t : R.flowing_faces) o << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+      else
+        for(const Triangle& t : input.faces) o << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
     });
   std::ostringstream caption;
   caption << "dlf sphere " << s.input << ": d_area " << std::setprecision(10) << R.final_metrics.d_area;
@@ -241,7 +274,20 @@ int sphere_command(const std::vector<std::string>& args)
     j["stop_reason"] = SMP::stop_reason_name(R.stop_reason);
     j["seconds"] = { { "initial", R.seconds_initial }, { "flow", R.seconds_flow }, { "total", total } };
     j["options"] = { { "tolerance", s.options.tolerance }, { "log_area_tolerance", s.options.log_area_tolerance },
-                     { "max_iterations", s.options.max_iterations } };
+                     { "max_iterations", s.options.max_iterations },
+                     { "mu", s.options.mu > 0 ? json(s.options.mu) : json(nullptr) }, // null: the default
+                     { "literal_targets", !s.options.lump_targets_on_flowing_faces },
+                     { "delaunay_flips", s.options.delaunay_flips } };
+    // As `dlf disk`: "final" is measured on the input triangles; the flowing
+    // triangulation (flipped in paper mode) has its own fields.
+    j["mode"] = s.mode;
+    j["caller_inverted_faces"] = ok ? json(R.inverted_faces + R.degenerate_faces) : json(nullptr);
+    j["flowing_inverted_faces"] = ok ? json(R.flowing_inverted_faces) : json(nullptr);
+    j["flips"] = R.flips;
+    j["flowing_non_delaunay_edges"] = ok && s.mode == "paper" ? json(R.flowing_non_delaunay_edges) : json(nullptr);
+    j["initial_domain_d_area"] = R.initial_d_area;
+    j["domain_d_area"] = R.final_d_area;
+    j["final_residual"] = R.final_residual;
     if(density.source != "none") {
       json d;
       d["source"] = density.source;
@@ -269,7 +315,8 @@ int sphere_command(const std::vector<std::string>& args)
       json h = json::array();
       for(const SMP::Discrete_lie_flow_iteration& it : R.history)
         h.push_back({ { "iteration", it.iteration }, { "step", it.step }, { "critical_step", it.critical_step },
-                      { "d_area", it.d_area }, { "backtracks", it.backtracks }, { "seconds", it.seconds } });
+                      { "d_area", it.d_area }, { "backtracks", it.backtracks }, { "flips", it.flips },
+                      { "seconds", it.seconds } });
       j["history"] = h;
     }
     outputs.write(s.report, [&](std::ostream& o) { o << j.dump(2) << '\n'; });
@@ -280,12 +327,16 @@ int sphere_command(const std::vector<std::string>& args)
     std::cout << std::setprecision(8) << "dlf sphere " << s.input << ": " << input.xyz.size() << " vertices, "
               << input.faces.size() << " faces\n"
               << "  status " << SMP::discrete_lie_flow_error_name(status) << ": " << R.message << "\n";
-    if(ok)
+    if(ok) {
       std::cout << "  iterations " << R.iterations << " (" << SMP::stop_reason_name(R.stop_reason) << ")\n"
                 << "  d_area " << R.initial_metrics.d_area << " -> " << R.final_metrics.d_area << " (optimum 2)\n"
-                << "  inverted faces " << R.final_metrics.inverted_faces << "\n"
-                << std::setprecision(3) << "  seconds: initial map " << R.seconds_initial << ", flow " << R.seconds_flow
+                << "  inverted faces " << R.final_metrics.inverted_faces << "\n";
+      if(s.mode == "paper")
+        std::cout << "  mode paper: edge flips " << R.flips << ", d_area on the flowing triangulation "
+                  << R.final_d_area << ", input triangles folded " << R.inverted_faces + R.degenerate_faces << "\n";
+      std::cout << std::setprecision(3) << "  seconds: initial map " << R.seconds_initial << ", flow " << R.seconds_flow
                 << ", total " << total << "\n";
+    }
     for(const Density_region& r : density.regions)
       std::cout << "  region " << r.name << ": factor " << r.factor << ", " << r.faces.size()
                 << " faces, share of the sphere " << r.achieved << " (prescribed " << r.prescribed << ")\n";

@@ -9,6 +9,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_initial_map.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_problem.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_paper_flow.h>
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/internal/kernel_traits.h>
@@ -19,6 +20,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
+#include <array>
 #include <chrono>
 #include <memory>
 #include <string>
@@ -53,6 +55,19 @@ struct Discrete_lie_flow_sphere_report
   /// The metrics of DESIGN.md of the initial and the final map (valid when status is OK).
   internal::dlf::Distortion_metrics initial_metrics, final_metrics;
   std::vector<Discrete_lie_flow_iteration> history; ///< when options.record_history
+  /// Paper mode: there `inverted_faces` and `degenerate_faces` count the
+  /// caller's triangles folded under the result (the mode's documented
+  /// contract), `final_d_area` and `final_residual` are those of the flowing
+  /// triangulation, whose faces (vertex indices in the order of
+  /// `vertices(mesh)`) are `flowing_faces` (empty in certified mode, whose
+  /// triangulation is the input's). `flowing_inverted_faces` counts its
+  /// faces not positively oriented (exact; always 0), and
+  /// `flowing_non_delaunay_edges` its edges left non-Delaunay on the sphere
+  /// (0 except with flips off, or when the last flips were undone because
+  /// they raised D_area: starts compressed to the rounding level).
+  std::size_t flips = 0;
+  std::size_t flowing_inverted_faces = 0, flowing_non_delaunay_edges = 0;
+  std::vector<std::array<int, 3> > flowing_faces;
 };
 
 /// \ingroup PkgSurfaceMeshParameterizationMethods
@@ -66,7 +81,7 @@ struct Discrete_lie_flow_sphere_report
 /// area distortion; it is accepted only when every face is positively
 /// oriented by CGAL's exact predicate `orientation(O, p, q, r)` (O the
 /// centre), else other punctures are tried. The flow (certified mode, the
-/// only mode on the sphere) descends the barrier energy D_area of the
+/// default) descends the barrier energy D_area of the
 /// triangles between the sphere points: first on their cone areas along the
 /// tangential Sobolev gradient, then on their flat areas along a regularised
 /// Gauss–Newton direction followed by vertex-by-vertex relaxation sweeps.
@@ -74,6 +89,13 @@ struct Discrete_lie_flow_sphere_report
 /// per-face cubics det[p₁ + λt₁, p₂ + λt₂, p₃ + λt₃], every point is
 /// re-normalised and every accepted step certified exactly. The result is
 /// never folded: every face of the caller's mesh keeps det[p, q, r] > 0.
+///
+/// Paper mode (`Discrete_lie_flow_mode::PAPER`, the reference) runs the
+/// paper's flow from the same initial map: Delaunay edge flips of the flowing
+/// spherical triangulation before each Poisson solve, the tangential part of
+/// the potential's gradient, the same cubic step, every step certified on the
+/// flowing triangulation. Its result may fold the caller's triangles; the
+/// report counts them and holds the flowing triangulation.
 ///
 /// \tparam TriangleMesh_ a model of `FaceGraph` (closed, connected, genus 0, triangles)
 /// \tparam SolverTraits_ `CGAL::Eigen_solver_traits<S>` with `S` an Eigen
@@ -105,7 +127,7 @@ public:
   /// Maps `mesh` onto the unit sphere: `sphere_map` (a writable property
   /// map `vertex_descriptor` → a 3D point type constructible from three
   /// doubles, e.g. the mesh kernel's `Point_3`) receives unit vectors, and
-  /// only on success (never NaN, never a folded map). Per-face densities, if
+  /// only on success (never NaN; never a folded map in certified mode). Per-face densities, if
   /// any, are read from `options().face_density` in the order of `faces(mesh)`.
   template <class VertexSphereMap>
   Error_code parameterize(const Triangle_mesh& mesh, VertexSphereMap sphere_map)
@@ -156,8 +178,7 @@ public:
     R = Discrete_lie_flow_sphere_report();
     R.vertices = P.xyz.size();
     R.faces = P.faces.size();
-    if(m_options.mode == Discrete_lie_flow_mode::PAPER)
-      return fail(ERROR_WRONG_PARAMETER, "paper mode (edge flips) is not implemented on the sphere; use the certified mode");
+    if(m_options.mode == Discrete_lie_flow_mode::PAPER) return run_paper(P, points);
     D::Validation check = D::validate_sphere_topology(P.xyz.size(), P.faces);
     if(!check.ok()) return fail(check.code, check.message);
     check = D::validate_sphere_geometry(P, m_options.face_density);
@@ -214,6 +235,67 @@ private:
   Discrete_lie_flow_options m_options;
   Solver_traits m_solver_traits;
   std::shared_ptr<Discrete_lie_flow_sphere_report> m_report;
+
+  // Paper mode (the reference): the paper's flow with Delaunay edge flips of
+  // the flowing spherical triangulation, from the same certified initial map.
+  // The flowing triangulation is certified at every step; the caller's
+  // triangles may fold under the result, which is reported, not refused.
+  Error_code run_paper(internal::dlf::Sphere_problem& P, std::vector<internal::dlf::Vec3>& points)
+  {
+    namespace D = internal::dlf;
+    typedef std::chrono::steady_clock Clock;
+    Discrete_lie_flow_sphere_report& R = *m_report;
+    D::Validation check = D::validate_sphere_topology(P.xyz.size(), P.faces);
+    if(!check.ok()) return fail(check.code, check.message);
+    check = D::validate_sphere_geometry(P, m_options.face_density);
+    if(!check.ok()) return fail(check.code, check.message);
+
+    const Clock::time_point t0 = Clock::now();
+    std::vector<D::Vec3> p;
+    const D::Sphere_initial_outcome init =
+      D::certified_sphere_initial_map<typename Solver_traits::Solver>(P, p);
+    R.seconds_initial = std::chrono::duration<double>(Clock::now() - t0).count();
+    R.initial_attempts = init.attempts;
+    if(!init.certified) return fail(Error_code(ERROR_INITIAL_MAP_FOLDED), init.message);
+    R.puncture_face = init.puncture;
+    R.initial_scale = init.scale;
+    R.initial_metrics = D::spherical_distortion(P.xyz, p, P.faces, density());
+
+    const Clock::time_point t1 = Clock::now();
+    D::Sphere_paper_outcome out = D::paper_sphere_flow(P, p, m_options, m_solver_traits.solver());
+    R.seconds_flow = std::chrono::duration<double>(Clock::now() - t1).count();
+    R.stop_reason = out.stop_reason;
+    R.iterations = out.iterations;
+    R.initial_d_area = out.initial_d_area;
+    R.final_d_area = out.final_d_area;
+    R.final_residual = out.final_residual;
+    R.rejected_by_exact_check = out.rejected_by_exact_check;
+    R.factorizations = out.factorizations;
+    R.symbolic_analyses = out.symbolic_analyses;
+    R.seconds_assembly = out.seconds_assembly;
+    R.seconds_solve = out.seconds_solve;
+    R.seconds_step = out.seconds_step;
+    R.history = std::move(out.history);
+    R.flips = out.flips;
+    R.flowing_non_delaunay_edges = out.non_delaunay_edges;
+    R.flowing_faces.assign(out.flowing.begin(), out.flowing.end());
+    R.final_metrics = D::spherical_distortion(P.xyz, p, P.faces, density());
+    const D::Orientation_count caller = D::count_orientations_sphere(p, P.faces);
+    R.inverted_faces = caller.inverted;
+    R.degenerate_faces = caller.degenerate;
+    const D::Orientation_count flowing = D::count_orientations_sphere(p, out.flowing);
+    R.flowing_inverted_faces = flowing.inverted + flowing.degenerate;
+    if(!flowing.all_positive()) // cannot happen: the start, every accepted step and every flip are certified
+      return fail(ERROR_NO_1_TO_1_MAPPING, "the flow produced " + std::to_string(R.flowing_inverted_faces) +
+                                           " non-positive faces of its flowing triangulation");
+    if(out.iterations == 0 && out.stop_reason == Discrete_lie_flow_stop_reason::STALLED)
+      return fail(Error_code(ERROR_FLOW_STALLED), out.solver_failed ? "the linear solver failed on the initial map"
+                                                                     : "no step improves the initial map");
+    points.swap(p);
+    R.status = OK;
+    R.message = "Success";
+    return OK;
+  }
 };
 
 /// \ingroup PkgSurfaceMeshParameterizationMethods
