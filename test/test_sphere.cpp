@@ -612,7 +612,7 @@ TEST(Sphere_map, GeneratedStarfish)
 
 TEST(Sphere_map, GeneratedDumbbell) { check_sphere_map({ "dumbbell", 2.01 }, dumbbell(3, 0.25, 0.12)); }
 
-// A neck of length 60 radii: the Tutte start compresses one lobe by ~e^54 and
+// Stretched 6× with a neck of radius 0.1: the Tutte start is off by ~e^54 and
 // the flow does not open it within the cap, but every iterate stays certified.
 TEST(Sphere_map, LongNeckStaysCertified)
 {
