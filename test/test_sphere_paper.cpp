@@ -301,7 +301,7 @@ void check_paper_map(const std::string& name, double max_d_area, bool flips = tr
   const long nd = non_delaunay_edges(run.p, flowing);
   EXPECT_EQ(nd, long(R.flowing_non_delaunay_edges));
   EXPECT_EQ(nd, 0);
-  if(flips) EXPECT_GT(R.flips, 0u); // sphere.off is Delaunay from the start
+  if(flips) { EXPECT_GT(R.flips, 0u); } // sphere.off is Delaunay from the start
 
   // D_area on the flowing triangulation, from the start down.
   const double D_flow = d_area(run.xyz, run.p, flowing, run.faces);
@@ -343,6 +343,39 @@ TEST(Sphere_paper_map, WithoutFlipsTheInputTriangulationFlows)
   EXPECT_EQ(non_positive_faces(run.p, run.faces), 0u);
   EXPECT_EQ(R.inverted_faces + R.degenerate_faces, 0u);
   EXPECT_LT(R.final_d_area, R.initial_d_area);
+}
+
+TEST(Sphere_paper_map, DensityGoesToTheFlowingFaces)
+{
+  // Density 4 on the faces whose centroid has z > 0.5: their share of the
+  // sphere must move towards 4 A_in / (4 A_in + A_out).
+  const SM sm = read_mesh("sphere");
+  SMP::Discrete_lie_flow_options o;
+  std::vector<bool> north;
+  double in = 0, out = 0;
+  for(auto f : CGAL::faces(sm)) {
+    std::vector<K::Point_3> q;
+    for(SM_vertex v : vertices_around_face(halfedge(f, sm), sm)) q.push_back(sm.point(v));
+    const double z = (q[0].z() + q[1].z() + q[2].z()) / 3, a = std::sqrt(CGAL::squared_area(q[0], q[1], q[2]));
+    north.push_back(z > 0.5);
+    (north.back() ? in : out) += a;
+    o.face_density.push_back(north.back() ? 4. : 1.);
+  }
+  const Paper_run run = run_paper("sphere", o);
+  const SMP::Discrete_lie_flow_sphere_report& R = run.report;
+  ASSERT_EQ(R.status, SMP::OK) << R.message;
+  std::vector<Tri> flowing(R.flowing_faces.begin(), R.flowing_faces.end());
+  EXPECT_EQ(non_positive_faces(run.p, flowing), 0u);
+  EXPECT_LT(R.final_d_area, R.initial_d_area);
+  long double share = 0, total = 0;
+  for(std::size_t f = 0; f < run.faces.size(); ++f) {
+    const Tri& t = run.faces[f];
+    const long double a = flat_area(run.p[std::size_t(t[0])], run.p[std::size_t(t[1])], run.p[std::size_t(t[2])]);
+    total += a;
+    if(north[f]) share += a;
+  }
+  const double prescribed = 4 * in / (4 * in + out), uniform = in / (in + out);
+  EXPECT_NEAR(double(share / total), prescribed, 0.1 * prescribed) << "uniform share " << uniform;
 }
 
 TEST(Sphere_paper_map, HistoryCallbackAndErrors)
