@@ -492,12 +492,15 @@ const std::vector<std::string> disk_meshes = {
   "poly2x^2+y^2-0.062500", "cylinder", "three_peaks", "mushroom"
 };
 const std::vector<std::string> large_disk_meshes = { "lion-head", "mannequin-devil", "cylinder_locally_refined" };
-const std::vector<std::string> mild_meshes = { "nefertiti", "patch-23", "patch-13", "patch-20", "patch-01",
-                                               "three_peaks", "mushroom" };
+// Every disk of the data set with at least 100 faces (doc/paper_mode.md).
+const std::vector<std::string> paper_meshes = { "patch-23", "patch-13", "patch-21", "blob", "nefertiti", "patch-20",
+                                                "patch-30", "mesh_with_border", "patch-01", "plane",
+                                                "poly2x^2+y^2-0.062500", "cylinder", "three_peaks", "mushroom" };
 
 class Certified_disk : public ::testing::TestWithParam<std::string> {};
 class Certified_large_disk : public ::testing::TestWithParam<std::string> {};
 class Paper_disk : public ::testing::TestWithParam<std::string> {};
+class Paper_large_disk : public ::testing::TestWithParam<std::string> {};
 
 // The data set's meshes are what the tests assume: one component, one border loop, a disk.
 TEST_P(Certified_disk, InputIsADisk)
@@ -584,7 +587,8 @@ INSTANTIATE_TEST_SUITE_P(DataSet, Certified_large_disk, ::testing::ValuesIn(larg
 // Paper mode
 // ---------------------------------------------------------------------------
 
-void expect_paper_run(const Flow_run& r, Border_shape shape)
+void expect_paper_run(const Flow_run& r, Border_shape shape, double max_d_area = 2.05,
+                      std::size_t max_iterations = 150)
 {
   ASSERT_EQ(r.code, SMP::OK) << SMP::discrete_lie_flow_error_name(r.code) << ": " << r.report.message;
   const std::size_t n = r.mesh.xyz.size();
@@ -613,26 +617,35 @@ void expect_paper_run(const Flow_run& r, Border_shape shape)
 
   // d_area on the flowing triangulation, recomputed with 3D targets of its faces.
   const double d = d_area(r.mesh.xyz, r.uv, dom);
-  // The goal is 2.05; measured (doc/paper_mode.md): up to 2.048 on the
-  // circle, 2.11 (three_peaks) and 2.08 (mushroom) on the square. This bound
-  // guards against regressions of the measured state.
-  EXPECT_LE(d, shape == Border_shape::SQUARE ? 2.12 : 2.06);
+  // The goals (doc/paper_mode.md has the measured figures): 2.05 on
+  // the data set's disks, beating the prototype's 2.23 on lion-head and 3.32
+  // on mannequin-devil, at most 150 iterations.
+  EXPECT_LE(d, max_d_area);
   // The flow guards flat 3D triangles made by flips (target ≥ 1e-3 of the
   // smallest input face), which moves its figure a little then.
   const bool flat = smallest_relative_area_3(r.mesh.xyz, dom) < 1e-3 * smallest_relative_area_3(r.mesh.xyz, r.mesh.faces);
   EXPECT_NEAR(d, r.report.final_d_area, (flat ? 1e-3 : 1e-9) * d);
-  // The cap is 150; three_peaks (circle) plateaus after 157 (doc/paper_mode.md).
-  EXPECT_LE(r.report.iterations, 170u);
+  EXPECT_LE(r.report.iterations, max_iterations);
+  // The reported stop reason and D_area are those of the returned map: a
+  // converged run is within the tolerance, and no iterate was better.
+  if(r.report.stop_reason == SMP::Discrete_lie_flow_stop_reason::CONVERGED)
+    EXPECT_LE(r.report.final_d_area, 2 + paper_options().tolerance);
+  for(const auto& h : r.report.history) EXPECT_GE(h.d_area, r.report.final_d_area * (1 - 1e-12));
   expect_on_border(r, shape, dom);
   expect_report_totals(r, dom);
 }
+
+// The cap is 150 iterations; blob on the square takes 159 here (118
+// through `dlf disk`: the flow's tail is sensitive to rounding-level changes
+// of the start; doc/paper_mode.md).
+std::size_t paper_iteration_bound(const std::string& mesh) { return mesh == "blob" ? 170 : 150; }
 
 TEST_P(Paper_disk, Circle)
 {
   SM sm;
   ASSERT_TRUE(read_mesh(GetParam(), sm));
   const Flow_run r = run_dlf<Circle_dlf>(sm, Circle_init(), paper_options());
-  expect_paper_run(r, Border_shape::CIRCLE);
+  expect_paper_run(r, Border_shape::CIRCLE, 2.05, paper_iteration_bound(GetParam()));
 }
 
 TEST_P(Paper_disk, Square)
@@ -642,18 +655,81 @@ TEST_P(Paper_disk, Square)
   Square_init init;
   ASSERT_TRUE(library_square_init(sm, init)) << "choose_square_border_corners found no corners";
   const Flow_run r = run_dlf<Square_dlf>(sm, init, paper_options());
-  expect_paper_run(r, Border_shape::SQUARE);
+  expect_paper_run(r, Border_shape::SQUARE, 2.05, paper_iteration_bound(GetParam()));
 }
 
-INSTANTIATE_TEST_SUITE_P(DataSet, Paper_disk, ::testing::ValuesIn(mild_meshes), test_name);
+INSTANTIATE_TEST_SUITE_P(DataSet, Paper_disk, ::testing::ValuesIn(paper_meshes), test_name);
+
+// The large disks: 2.05 on cylinder_locally_refined; lion-head and
+// mannequin-devil beat the prototype (2.23, 3.32). Bounds: the measured
+// figures (doc/paper_mode.md) plus a margin; lion-head on the circle and
+// mannequin-devil on the square still improve slowly and take 186 and 154
+// iterations (179 here), over the 150.
+struct Paper_bound { double d_area; std::size_t iterations; };
+Paper_bound paper_large_bound(const std::string& mesh, Border_shape shape)
+{
+  const bool square = shape == Border_shape::SQUARE;
+  if(mesh == "lion-head") return square ? Paper_bound{ 2.08, 150 } : Paper_bound{ 2.06, 200 };       // 2.050, 2.041
+  if(mesh == "mannequin-devil") return square ? Paper_bound{ 2.06, 190 } : Paper_bound{ 2.33, 150 }; // 2.041, 2.311
+  return Paper_bound{ 2.05, 150 };
+}
+
+TEST_P(Paper_large_disk, Circle)
+{
+  SM sm;
+  ASSERT_TRUE(read_mesh(GetParam(), sm));
+  const Flow_run r = run_dlf<Circle_dlf>(sm, Circle_init(), paper_options());
+  const Paper_bound b = paper_large_bound(GetParam(), Border_shape::CIRCLE);
+  expect_paper_run(r, Border_shape::CIRCLE, b.d_area, b.iterations);
+}
+
+TEST_P(Paper_large_disk, Square)
+{
+  SM sm;
+  ASSERT_TRUE(read_mesh(GetParam(), sm));
+  Square_init init;
+  ASSERT_TRUE(library_square_init(sm, init)) << "choose_square_border_corners found no corners";
+  const Flow_run r = run_dlf<Square_dlf>(sm, init, paper_options());
+  const Paper_bound b = paper_large_bound(GetParam(), Border_shape::SQUARE);
+  expect_paper_run(r, Border_shape::SQUARE, b.d_area, b.iterations);
+}
+
+INSTANTIATE_TEST_SUITE_P(DataSet, Paper_large_disk, ::testing::ValuesIn(large_disk_meshes), test_name);
+
+// The bug this guards against: the best map was re-flipped after the
+// convergence test, and a run reported as converged returned D_area 2.055
+// with tolerance 0.05 (mushroom). The stop reason and D_area must describe
+// the returned map on its own (Delaunay) flowing triangulation.
+TEST(Paper_consistency, ConvergedMapIsWithinTolerance)
+{
+  SM sm;
+  ASSERT_TRUE(read_mesh("mushroom", sm));
+  for(double tolerance : { 0.04, 0.05 }) {
+    SMP::Discrete_lie_flow_options o = paper_options();
+    o.tolerance = tolerance;
+    const Flow_run r = run_dlf<Circle_dlf>(sm, Circle_init(), o);
+    ASSERT_EQ(r.code, SMP::OK) << r.report.message;
+    EXPECT_EQ(r.report.stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED)
+      << "stop reason " << SMP::stop_reason_name(r.report.stop_reason) << ", tolerance " << tolerance;
+    std::vector<Tri> dom(r.report.domain_faces.begin(), r.report.domain_faces.end());
+    const double d = d_area(r.mesh.xyz, r.uv, dom);
+    EXPECT_NEAR(d, r.report.final_d_area, 1e-3 * d);
+    EXPECT_LE(r.report.final_d_area, 2 + tolerance);
+    EXPECT_LE(d, 2 + tolerance + 1e-3);
+    std::size_t refused = 0;
+    EXPECT_EQ(non_delaunay_edges(r.uv, dom, refused), 0u);
+    for(const auto& h : r.report.history) EXPECT_GE(h.d_area, r.report.final_d_area * (1 - 1e-12));
+  }
+}
 
 // ---------------------------------------------------------------------------
-// Stall: the paper's flow on a fixed connectivity (no flips) drives a vertex
-// onto an edge of a strongly curved disk; the flow must detect it and return
-// its best iterate, valid and not worse than the start.
+// The paper mode on a fixed connectivity (no flips): the paper's step stalls
+// there (a vertex driven onto an edge; test_numerics.cpp, Paper_stall); the
+// collapse guard removes that stall on mushroom, and the run must return a
+// valid best iterate, not worse than the start, on the caller's triangles.
 // ---------------------------------------------------------------------------
 
-TEST(Paper_stall, FixedConnectivityMushroom)
+TEST(Paper_fixed_connectivity, Mushroom)
 {
   SM sm;
   ASSERT_TRUE(read_mesh("mushroom", sm));
@@ -661,9 +737,10 @@ TEST(Paper_stall, FixedConnectivityMushroom)
   o.delaunay_flips = false;
   const Flow_run r = run_dlf<Circle_dlf>(sm, Circle_init(), o);
   ASSERT_EQ(r.code, SMP::OK) << r.report.message;
-  EXPECT_TRUE(r.report.stop_reason == SMP::Discrete_lie_flow_stop_reason::STALLED ||
-              r.report.stop_reason == SMP::Discrete_lie_flow_stop_reason::PLATEAU)
+  // Measured: converged after 5 iterations (the paper's step: 9.54, stalled).
+  EXPECT_EQ(r.report.stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED)
     << "stop reason " << SMP::stop_reason_name(r.report.stop_reason) << " after " << r.report.iterations << " iterations";
+  EXPECT_LE(r.report.final_d_area, 2 + o.tolerance);
   EXPECT_LT(r.report.iterations, o.max_iterations);
   // Without flips the flowing triangulation is the caller's.
   const Signs s0 = exact_signs(r.uv0, r.mesh.faces), s = exact_signs(r.uv, r.mesh.faces);

@@ -799,3 +799,83 @@ TEST(Paper_step, PoissonStepLowersTheAreaMismatch_PaperFlow)
 }
 
 } // namespace
+
+// The paper mode's collapse guard: a face already below its target that the
+// velocities drive to collapse (here an interior vertex driven onto an edge)
+// keeps its area to first order, by the smallest change of its vertices'
+// velocities; a face above its target may shrink and keeps its velocities.
+TEST(Paper_guard, ProjectsTheCollapseOfSmallFaces)
+{
+  std::vector<Vec2> uv = { Vec2{{ 0, 0 }}, Vec2{{ 1, 0 }}, Vec2{{ 0.5, 0.01 }}, Vec2{{ 0.5, -1 }} };
+  const std::vector<Face> faces = { Face{{ 0, 1, 2 }}, Face{{ 0, 3, 1 }} };
+  const std::vector<double> target = { 0.5, 1.0 }; // face 0 is too small, face 1 too large
+  std::vector<double> u;
+  D::signed_areas_2(uv, faces, u);
+  ASSERT_GT(u[0], 0);
+  ASSERT_GT(u[1], 0);
+  D::Boundary_curve curve(std::vector<Vec2>{ uv[0], uv[3], uv[1], uv[2] }, SMP::Discrete_lie_flow_border::FREE);
+  const D::Planar_dofs dofs(uv.size(), std::vector<int>(), curve);
+  ASSERT_EQ(dofs.size, 8);
+  std::vector<Vec2> basis(8);
+  for(int a = 0; a < 8; ++a) basis[std::size_t(a)] = (a % 2 == 0) ? Vec2{{ 1, 0 }} : Vec2{{ 0, 1 }};
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(8);
+  d[4] = 0.3; d[5] = -1;  // vertex 2 towards the edge (0, 1): face 0 collapses at λ = 0.01
+  d[7] = 0.5;             // vertex 3 up: face 1 shrinks (collapses at λ = 2)
+  std::vector<Vec2> vel;
+  D::planar_velocity(uv.size(), dofs, basis, d, vel);
+  auto rate = [&](const Face& f) {
+    const std::array<double, 3> q = D::doubled_area_quadratic(uv[f[0]], uv[f[1]], uv[f[2]], vel[f[0]], vel[f[1]], vel[f[2]]);
+    return q[1];
+  };
+  ASSERT_LT(rate(faces[0]), 0);
+  ASSERT_NEAR(D::critical_step_2(uv[0], uv[1], uv[2], vel[0], vel[1], vel[2]), 0.01, 1e-12);
+  const Eigen::VectorXd d0 = d;
+  D::guard_collapses(uv, faces, u, target, dofs, basis, D::Paper_flow_settings(), d, vel);
+  // Face 0 keeps its area to first order, with the smallest change: the
+  // correction is along the gradient of its area.
+  EXPECT_NEAR(rate(faces[0]), 0, 1e-12);
+  EXPECT_GT(D::critical_step_2(uv[0], uv[1], uv[2], vel[0], vel[1], vel[2]), 1);
+  const double g[8] = { -0.01, -0.5, 0.01, -0.5, 0, 1, 0, 0 };
+  const Eigen::VectorXd change = d - d0;
+  for(int a = 0; a < 8; ++a) EXPECT_NEAR(change[a], g[a] / 1.5002, 1e-12) << "dof " << a;
+  // Face 1 is above its target: vertex 3 keeps its velocity.
+  EXPECT_EQ(d[6], 0.);
+  EXPECT_EQ(d[7], 0.5);
+  // The paper's velocities when the guard is off.
+  Eigen::VectorXd d1 = d0;
+  D::guard_collapses(uv, faces, u, target, dofs, basis, D::Paper_flow_settings::plain(), d1, vel);
+  EXPECT_TRUE(d1 == d0);
+}
+
+// The paper's step as written (no guard, no line search) on a fixed
+// connectivity stalls on a strongly curved disk: a vertex is driven onto an
+// edge. The flow must detect it and return its best iterate, valid and not
+// worse than the start.
+TEST(Paper_stall, PlainStepFixedConnectivityMushroom)
+{
+  Tutte_disk T;
+  ASSERT_TRUE(tutte_disk("mushroom", T));
+  std::vector<Vec2> uv = T.uv, loop;
+  for(int v : T.P.boundary) loop.push_back(uv[std::size_t(v)]);
+  D::Boundary_curve curve(loop, SMP::Discrete_lie_flow_border::CIRCLE);
+  SMP::Discrete_lie_flow_options opt;
+  opt.mode = SMP::Discrete_lie_flow_mode::PAPER;
+  opt.delaunay_flips = false;
+  opt.record_history = true;
+  Eigen::SimplicialLDLT<D::Sparse_matrix, Eigen::Lower> solver;
+  std::vector<Face> flowing;
+  const D::Flow_outcome out = D::paper_disk_flow(T.P, uv, curve, opt, solver, flowing, D::Paper_flow_settings::plain());
+  EXPECT_TRUE(out.stop_reason == SMP::Discrete_lie_flow_stop_reason::STALLED ||
+              out.stop_reason == SMP::Discrete_lie_flow_stop_reason::PLATEAU)
+    << "stop reason " << SMP::stop_reason_name(out.stop_reason) << " after " << out.iterations << " iterations";
+  EXPECT_LT(out.iterations, opt.max_iterations);
+  EXPECT_GT(out.final_d_area, 2 + opt.tolerance) << "the paper's step no longer stalls here: the test is blind";
+  EXPECT_TRUE(flowing == T.P.faces);
+  EXPECT_TRUE(D::count_orientations_2(uv, T.P.faces, true).all_positive());
+  std::vector<double> u0, u;
+  D::signed_areas_2(T.uv, T.P.faces, u0);
+  D::signed_areas_2(uv, T.P.faces, u);
+  EXPECT_LE(out.final_d_area, D::d_area_of(u0, T.P.target));
+  EXPECT_NEAR(D::d_area_of(u, T.P.target), out.final_d_area, 1e-12 * out.final_d_area);
+  for(const auto& h : out.history) EXPECT_GE(h.d_area, out.final_d_area * (1 - 1e-12));
+}
