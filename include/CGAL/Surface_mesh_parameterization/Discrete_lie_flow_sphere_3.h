@@ -178,38 +178,15 @@ public:
     R = Discrete_lie_flow_sphere_report();
     R.vertices = P.xyz.size();
     R.faces = P.faces.size();
-    if(m_options.mode == Discrete_lie_flow_mode::PAPER) return run_paper(P, points);
-    D::Validation check = D::validate_sphere_topology(P.xyz.size(), P.faces);
-    if(!check.ok()) return fail(check.code, check.message);
-    check = D::validate_sphere_geometry(P, m_options.face_density);
-    if(!check.ok()) return fail(check.code, check.message);
-
-    const Clock::time_point t0 = Clock::now();
     std::vector<D::Vec3> p;
-    const D::Sphere_initial_outcome init =
-      D::certified_sphere_initial_map<typename Solver_traits::Solver>(P, p);
-    R.seconds_initial = std::chrono::duration<double>(Clock::now() - t0).count();
-    R.initial_attempts = init.attempts;
-    if(!init.certified) return fail(Error_code(ERROR_INITIAL_MAP_FOLDED), init.message);
-    R.puncture_face = init.puncture;
-    R.initial_scale = init.scale;
-    R.initial_metrics = D::spherical_distortion(P.xyz, p, P.faces, density());
+    const Error_code started = start(P, p);
+    if(started != OK) return started;
+    if(m_options.mode == Discrete_lie_flow_mode::PAPER) return run_paper(P, p, points);
 
     const Clock::time_point t1 = Clock::now();
     D::Flow_outcome out = D::certified_sphere_flow(P, p, m_options, m_solver_traits.solver());
     R.seconds_flow = std::chrono::duration<double>(Clock::now() - t1).count();
-    R.stop_reason = out.stop_reason;
-    R.iterations = out.iterations;
-    R.initial_d_area = out.initial_d_area;
-    R.final_d_area = out.final_d_area;
-    R.final_residual = out.final_residual;
-    R.rejected_by_exact_check = out.rejected_by_exact_check;
-    R.factorizations = out.factorizations;
-    R.symbolic_analyses = out.symbolic_analyses;
-    R.seconds_assembly = out.seconds_assembly;
-    R.seconds_solve = out.seconds_solve;
-    R.seconds_step = out.seconds_step;
-    R.history = std::move(out.history);
+    record(out);
     R.final_metrics = D::spherical_distortion(P.xyz, p, P.faces, density());
     const D::Orientation_count oc = D::count_orientations_sphere(p, P.faces);
     R.inverted_faces = oc.inverted;
@@ -232,15 +209,8 @@ private:
 
   const std::vector<double>& density() const { return m_options.face_density; }
 
-  Discrete_lie_flow_options m_options;
-  Solver_traits m_solver_traits;
-  std::shared_ptr<Discrete_lie_flow_sphere_report> m_report;
-
-  // Paper mode (the reference): the paper's flow with Delaunay edge flips of
-  // the flowing spherical triangulation, from the same certified initial map.
-  // The flowing triangulation is certified at every step; the caller's
-  // triangles may fold under the result, which is reported, not refused.
-  Error_code run_paper(internal::dlf::Sphere_problem& P, std::vector<internal::dlf::Vec3>& points)
+  // Both modes: validation, then the certified initial map `p`.
+  Error_code start(internal::dlf::Sphere_problem& P, std::vector<internal::dlf::Vec3>& p)
   {
     namespace D = internal::dlf;
     typedef std::chrono::steady_clock Clock;
@@ -249,21 +219,21 @@ private:
     if(!check.ok()) return fail(check.code, check.message);
     check = D::validate_sphere_geometry(P, m_options.face_density);
     if(!check.ok()) return fail(check.code, check.message);
-
     const Clock::time_point t0 = Clock::now();
-    std::vector<D::Vec3> p;
-    const D::Sphere_initial_outcome init =
-      D::certified_sphere_initial_map<typename Solver_traits::Solver>(P, p);
+    const D::Sphere_initial_outcome init = D::certified_sphere_initial_map<typename Solver_traits::Solver>(P, p);
     R.seconds_initial = std::chrono::duration<double>(Clock::now() - t0).count();
     R.initial_attempts = init.attempts;
     if(!init.certified) return fail(Error_code(ERROR_INITIAL_MAP_FOLDED), init.message);
     R.puncture_face = init.puncture;
     R.initial_scale = init.scale;
     R.initial_metrics = D::spherical_distortion(P.xyz, p, P.faces, density());
+    return OK;
+  }
 
-    const Clock::time_point t1 = Clock::now();
-    D::Sphere_paper_outcome out = D::paper_sphere_flow(P, p, m_options, m_solver_traits.solver());
-    R.seconds_flow = std::chrono::duration<double>(Clock::now() - t1).count();
+  // Both modes: what the flow reports, into the report.
+  void record(internal::dlf::Flow_outcome& out)
+  {
+    Discrete_lie_flow_sphere_report& R = *m_report;
     R.stop_reason = out.stop_reason;
     R.iterations = out.iterations;
     R.initial_d_area = out.initial_d_area;
@@ -276,6 +246,26 @@ private:
     R.seconds_solve = out.seconds_solve;
     R.seconds_step = out.seconds_step;
     R.history = std::move(out.history);
+  }
+
+  Discrete_lie_flow_options m_options;
+  Solver_traits m_solver_traits;
+  std::shared_ptr<Discrete_lie_flow_sphere_report> m_report;
+
+  // Paper mode (the reference): the paper's flow with Delaunay edge flips of
+  // the flowing spherical triangulation, from the same certified initial map.
+  // The flowing triangulation is certified at every step; the caller's
+  // triangles may fold under the result, which is reported, not refused.
+  Error_code run_paper(internal::dlf::Sphere_problem& P, std::vector<internal::dlf::Vec3>& p,
+                       std::vector<internal::dlf::Vec3>& points)
+  {
+    namespace D = internal::dlf;
+    typedef std::chrono::steady_clock Clock;
+    Discrete_lie_flow_sphere_report& R = *m_report;
+    const Clock::time_point t1 = Clock::now();
+    D::Sphere_paper_outcome out = D::paper_sphere_flow(P, p, m_options, m_solver_traits.solver());
+    R.seconds_flow = std::chrono::duration<double>(Clock::now() - t1).count();
+    record(out);
     R.flips = out.flips;
     R.flowing_non_delaunay_edges = out.non_delaunay_edges;
     R.flowing_faces.assign(out.flowing.begin(), out.flowing.end());
