@@ -169,13 +169,15 @@ struct Discrete_lie_flow_options
   /// Hard cap on the number of iterations.
   std::size_t max_iterations = 500;
   /// Fraction μ ∈ (0, 1) of the smallest critical root that a step may take;
-  /// 0 selects the measured default (0.8 in both modes; see doc/).
+  /// 0 selects the measured default (0.8; in paper mode 0.95, the bound of
+  /// its line search; see doc/).
   double mu = 0;
-  /// Largest step λ (paper mode: λ = min(step_cap, μ·λ_crit)); step 1 is the
-  /// full linearised correction, so larger steps overshoot near convergence.
+  /// Largest step λ (paper mode: its line search samples below
+  /// min(4·step_cap, μ·λ_crit)); step 1 is the full linearised correction.
   double step_cap = 1.0;
   /// Plateau test: stop when the best D_area improved by less than this
-  /// relative amount over `plateau_window` iterations.
+  /// relative amount over `plateau_window` iterations (paper mode: at least
+  /// 3e-4).
   double plateau_tolerance = 1e-4;
   std::size_t plateau_window = 10;
   /// Paper mode: flip the flowing mesh to Delaunay before each solve.
