@@ -254,17 +254,10 @@ Flow_outcome certified_disk_flow(const Disk_problem& P, std::vector<Vec2>& uv, B
     out.final_d_area = E;
     E_history.push_back(E);
 
-    Discrete_lie_flow_iteration info;
-    info.iteration = it;
-    info.step = lambda;
-    info.critical_step = lambda_crit;
-    info.limiting_face = limiting;
-    info.d_area = E;
-    info.backtracks = halvings;
-    info.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    if(opt.record_history || opt.callback) info.residual = area_residual(n, P.faces, u, P.target);
-    if(opt.record_history) out.history.push_back(info);
-    if(opt.callback && !opt.callback(info)) { out.stop_reason = Discrete_lie_flow_stop_reason::INTERRUPTED; break; }
+    if(!record_iteration(opt, it, lambda, lambda_crit, limiting, E, halvings, 0,
+                         std::chrono::duration<double>(Clock::now() - start).count(),
+                         [&] { return area_residual(n, P.faces, u, P.target); }, out))
+      break;
 
     if(E - 2 <= opt.tolerance) { out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED; break; }
     if(E_history.size() > opt.plateau_window) {

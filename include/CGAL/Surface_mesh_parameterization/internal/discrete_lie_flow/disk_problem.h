@@ -44,6 +44,29 @@ struct Flow_outcome
   std::vector<Discrete_lie_flow_iteration> history;
 };
 
+/// One iteration's record for the history and the callback of every flow.
+/// The residual (a pass over the faces) is computed only when someone reads
+/// it. False when the callback asks to stop; the stop reason is then set.
+template <class Residual>
+bool record_iteration(const Discrete_lie_flow_options& opt, std::size_t iteration, double step, double critical_step,
+                      int limiting_face, double d_area, std::size_t backtracks, std::size_t flips, double seconds,
+                      const Residual& residual, Flow_outcome& out)
+{
+  Discrete_lie_flow_iteration info;
+  info.iteration = iteration;
+  info.step = step;
+  info.critical_step = critical_step;
+  info.limiting_face = limiting_face;
+  info.d_area = d_area;
+  info.backtracks = backtracks;
+  info.flips = flips;
+  info.seconds = seconds;
+  if(opt.record_history || opt.callback) info.residual = residual();
+  if(opt.record_history) out.history.push_back(info);
+  if(opt.callback && !opt.callback(info)) { out.stop_reason = Discrete_lie_flow_stop_reason::INTERRUPTED; return false; }
+  return true;
+}
+
 /// Faces around each vertex, with the corner the vertex occupies.
 struct Vertex_faces
 {

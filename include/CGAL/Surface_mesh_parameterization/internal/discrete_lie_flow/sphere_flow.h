@@ -376,17 +376,10 @@ Flow_outcome certified_sphere_flow(const Sphere_problem& P, std::vector<Vec3>& p
       if(rising >= 3) force_polish = true;
     }
 
-    Discrete_lie_flow_iteration info;
-    info.iteration = it;
-    info.step = lambda;
-    info.critical_step = lambda_crit;
-    info.limiting_face = limiting;
-    info.d_area = D;
-    info.backtracks = halvings;
-    info.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    if(opt.record_history || opt.callback) info.residual = area_residual(n, P.faces, u, P.target);
-    if(opt.record_history) out.history.push_back(info);
-    if(opt.callback && !opt.callback(info)) { out.stop_reason = Discrete_lie_flow_stop_reason::INTERRUPTED; break; }
+    if(!record_iteration(opt, it, lambda, lambda_crit, limiting, D, halvings, 0,
+                         std::chrono::duration<double>(Clock::now() - start).count(),
+                         [&] { return area_residual(n, P.faces, u, P.target); }, out))
+      break;
 
     if(converged()) { out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED; break; }
     // Stall: the step keeps collapsing (many halvings, step by step). An

@@ -230,18 +230,10 @@ Sphere_paper_outcome paper_sphere_flow(const Sphere_problem& P, std::vector<Vec3
     best_iterate = (std::min)(best_iterate, d_area);
     best_history.push_back(best_iterate);
 
-    Discrete_lie_flow_iteration info;
-    info.iteration = it;
-    info.step = lambda;
-    info.critical_step = lambda_crit;
-    info.limiting_face = limiting;
-    info.d_area = d_area;
-    info.backtracks = halvings;
-    info.flips = flips;
-    info.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    if(opt.record_history || opt.callback) info.residual = area_residual(n, tri.faces, u, target);
-    if(opt.record_history) out.history.push_back(info);
-    if(opt.callback && !opt.callback(info)) { out.stop_reason = Discrete_lie_flow_stop_reason::INTERRUPTED; break; }
+    if(!record_iteration(opt, it, lambda, lambda_crit, limiting, d_area, halvings, flips,
+                         std::chrono::duration<double>(Clock::now() - start).count(),
+                         [&] { return area_residual(n, tri.faces, u, target); }, out))
+      break;
 
     if(best_converged) { out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED; break; }
     // Stall: the same triangle limits the step again and again while the
