@@ -61,39 +61,16 @@ inline Relaxation_outcome relax_planar_vertices(const std::vector<Face>& faces, 
       const double rate = 0.5 * (d[0] * (r[1] - s[1]) + d[1] * (s[0] - r[0]));
       if(rate < 0) lambda_crit = (std::min)(lambda_crit, -u[f] / rate);
     }
-    double lambda = (std::min)(1., mu * lambda_crit);
-    const double E = 1 + U * K;
-    u_new.resize(end - begin);
-    for(int halvings = 0; halvings < 8; ++halvings, lambda *= 0.5) {
-      const Vec2 moved = {{ uv[v][0] + lambda * d[0], uv[v][1] + lambda * d[1] }};
-      double dU = 0, dK = 0;
-      bool positive = true;
-      for(std::size_t i = begin; i < end && positive; ++i) {
-        const std::size_t f = around.of[i].first;
-        const int k = around.of[i].second;
-        const double un = signed_area_2(moved, uv[std::size_t(faces[f][(k + 1) % 3])], uv[std::size_t(faces[f][(k + 2) % 3])]);
-        if(!(un > 0)) { positive = false; break; }
-        u_new[i - begin] = un;
-        dU += un - u[f];
-        dK += energy.weight(f) * (1 / un - 1 / u[f]);
-      }
-      if(!positive) continue;
-      if(!(1 + (U + dU) * (K + dK) <= E + 1e-4 * lambda * slope)) continue;
-      bool certified = true;
-      for(std::size_t i = begin; i < end && certified; ++i) {
-        const std::size_t f = around.of[i].first;
-        const int k = around.of[i].second;
-        certified = exact_orientation_2(moved, uv[std::size_t(faces[f][(k + 1) % 3])],
-                                        uv[std::size_t(faces[f][(k + 2) % 3])]) == CGAL::POSITIVE;
-      }
-      if(!certified) { ++out.refused_by_exact_check; continue; }
+    const auto corner = [&](std::size_t f, int k, int j) -> const Vec2& { return uv[std::size_t(faces[f][(k + j) % 3])]; };
+    Vec2 moved;
+    if(relaxation_line_search(around, begin, end, energy, (std::min)(1., mu * lambda_crit), slope,
+                              [&](double l) { return Vec2{{ uv[v][0] + l * d[0], uv[v][1] + l * d[1] }}; },
+                              [&](std::size_t f, int k, const Vec2& x) { return signed_area_2(x, corner(f, k, 1), corner(f, k, 2)); },
+                              [&](std::size_t f, int k, const Vec2& x) {
+                                return exact_orientation_2(x, corner(f, k, 1), corner(f, k, 2)) == CGAL::POSITIVE;
+                              },
+                              u, u_new, U, K, moved, out))
       uv[v] = moved;
-      for(std::size_t i = begin; i < end; ++i) u[around.of[i].first] = u_new[i - begin];
-      U += dU;
-      K += dK;
-      ++out.moved;
-      break;
-    }
   }
   return out;
 }

@@ -89,43 +89,17 @@ inline Relaxation_outcome relax_sphere_vertices(const std::vector<Face>& faces, 
       const double d1 = dot(d, cross(r, s));
       if(d1 < 0) lambda_crit = (std::min)(lambda_crit, -d0 / d1);
     }
-    double lambda = (std::min)(1., mu * lambda_crit);
-    const double E = 1 + U * K;
-    u_new.resize(end - begin);
-    for(int halvings = 0; halvings < 8; ++halvings, lambda *= 0.5) {
-      const Vec3 moved = normalized(Vec3{{ q[0] + lambda * d[0], q[1] + lambda * d[1], q[2] + lambda * d[2] }});
-      double dU = 0, dK = 0;
-      bool positive = true;
-      for(std::size_t i = begin; i < end && positive; ++i) {
-        const Face& t = faces[around.of[i].first];
-        const int k = around.of[i].second;
-        const Vec3& r = p[std::size_t(t[(k + 1) % 3])];
-        const Vec3& s = p[std::size_t(t[(k + 2) % 3])];
-        // Corner order kept: (moved, r, s) is a rotation of the face.
-        const double un = barrier_area_sphere(moved, r, s, h0);
-        if(!(un > 0)) { positive = false; break; }
-        u_new[i - begin] = un;
-        dU += un - u[around.of[i].first];
-        dK += energy.weight(around.of[i].first) * (1 / un - 1 / u[around.of[i].first]);
-      }
-      if(!positive) continue;
-      const double E_new = 1 + (U + dU) * (K + dK);
-      if(!(E_new <= E + 1e-4 * lambda * slope)) continue;
-      bool certified = true;
-      for(std::size_t i = begin; i < end && certified; ++i) {
-        const Face& t = faces[around.of[i].first];
-        const int k = around.of[i].second;
-        certified = exact_orientation_sphere(moved, p[std::size_t(t[(k + 1) % 3])], p[std::size_t(t[(k + 2) % 3])]) ==
-                    CGAL::POSITIVE;
-      }
-      if(!certified) { ++out.refused_by_exact_check; continue; }
+    const auto corner = [&](std::size_t f, int k, int j) -> const Vec3& { return p[std::size_t(faces[f][(k + j) % 3])]; };
+    Vec3 moved;
+    // Corner order kept: (moved, r, s) is a rotation of the face.
+    if(relaxation_line_search(around, begin, end, energy, (std::min)(1., mu * lambda_crit), slope,
+                              [&](double l) { return normalized(Vec3{{ q[0] + l * d[0], q[1] + l * d[1], q[2] + l * d[2] }}); },
+                              [&](std::size_t f, int k, const Vec3& x) { return barrier_area_sphere(x, corner(f, k, 1), corner(f, k, 2), h0); },
+                              [&](std::size_t f, int k, const Vec3& x) {
+                                return exact_orientation_sphere(x, corner(f, k, 1), corner(f, k, 2)) == CGAL::POSITIVE;
+                              },
+                              u, u_new, U, K, moved, out))
       p[v] = moved;
-      for(std::size_t i = begin; i < end; ++i) u[around.of[i].first] = u_new[i - begin];
-      U += dU;
-      K += dK;
-      ++out.moved;
-      break;
-    }
   }
   return out;
 }
