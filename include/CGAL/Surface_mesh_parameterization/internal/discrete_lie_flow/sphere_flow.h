@@ -31,8 +31,12 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_problem.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_relaxation.h>
 
+#include <CGAL/assertions.h>
+
 #include <Eigen/Sparse>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <vector>
@@ -80,12 +84,12 @@ struct Sphere_flow_settings
   double relaxation_threshold = 0;
 };
 
-/// Cotangent stiffness plus `mass_weight` × lumped mass of the flat triangles
-/// between the (positively oriented) sphere points `p`.
-inline Sparse_matrix sphere_sobolev_matrix(const std::vector<Vec3>& p, const std::vector<Face>& faces, double mass_weight)
+/// Calls `add(i, j, v)` for every contribution to the cotangent stiffness
+/// plus `mass_weight` × lumped mass of the flat triangles between the
+/// (positively oriented) sphere points `p`, always in the same order.
+template <class Add>
+void sphere_sobolev_contributions(const std::vector<Vec3>& p, const std::vector<Face>& faces, double mass_weight, Add&& add)
 {
-  std::vector<Eigen::Triplet<double> > trip;
-  trip.reserve(faces.size() * 15);
   for(std::size_t f = 0; f < faces.size(); ++f) {
     const Face& t = faces[f];
     const Vec3* q[3] = { &p[std::size_t(t[0])], &p[std::size_t(t[1])], &p[std::size_t(t[2])] };
@@ -95,18 +99,69 @@ inline Sparse_matrix sphere_sobolev_matrix(const std::vector<Vec3>& p, const std
       const Vec3 u = sub(*q[(k + 1) % 3], *q[k]), v = sub(*q[(k + 2) % 3], *q[k]);
       const double w = 0.5 * dot(u, v) / twice_area; // ½ cot of the angle at corner k
       const int i = t[(k + 1) % 3], j = t[(k + 2) % 3];
-      trip.emplace_back(i, j, -w);
-      trip.emplace_back(j, i, -w);
-      trip.emplace_back(i, i, w);
-      trip.emplace_back(j, j, w);
-      trip.emplace_back(t[k], t[k], mass_weight * twice_area / 6);
+      add(i, j, -w);
+      add(j, i, -w);
+      add(i, i, w);
+      add(j, j, w);
+      add(t[k], t[k], mass_weight * twice_area / 6);
     }
   }
+}
+
+/// Cotangent stiffness plus `mass_weight` × lumped mass of the flat triangles
+/// between the (positively oriented) sphere points `p`.
+inline Sparse_matrix sphere_sobolev_matrix(const std::vector<Vec3>& p, const std::vector<Face>& faces, double mass_weight)
+{
+  std::vector<Eigen::Triplet<double> > trip;
+  trip.reserve(faces.size() * 15);
+  sphere_sobolev_contributions(p, faces, mass_weight, [&trip](int i, int j, double v) { trip.emplace_back(i, j, v); });
   Sparse_matrix K(Eigen::Index(p.size()), Eigen::Index(p.size()));
   K.setFromTriplets(trip.begin(), trip.end());
   K.makeCompressed();
   return K;
 }
+
+/// A square sparse matrix whose pattern the mesh fixes, assembled from the
+/// same contributions in the same order at every iteration. The first
+/// assembly sorts them (setFromTriplets) and records where each one lands;
+/// later ones add them straight into the value array, which gives the same
+/// sums in the same order (bit-identical values) without the sort, and the
+/// same pattern keeps the solver's symbolic analysis.
+class Fixed_pattern_matrix
+{
+public:
+  /// `contributions(add)` calls add(i, j, v) for each contribution.
+  template <class Contributions>
+  const Sparse_matrix& assemble(std::size_t n, Contributions&& contributions)
+  {
+    if(!m_built || std::size_t(m_matrix.rows()) != n) {
+      std::vector<Eigen::Triplet<double> > trip;
+      trip.reserve(m_slot.size());
+      contributions([&trip](int i, int j, double v) { trip.emplace_back(i, j, v); });
+      m_matrix.resize(Eigen::Index(n), Eigen::Index(n));
+      m_matrix.setFromTriplets(trip.begin(), trip.end());
+      m_matrix.makeCompressed();
+      const int* outer = m_matrix.outerIndexPtr();
+      const int* inner = m_matrix.innerIndexPtr();
+      m_slot.resize(trip.size());
+      for(std::size_t k = 0; k < trip.size(); ++k)
+        m_slot[k] = int(std::lower_bound(inner + outer[trip[k].col()], inner + outer[trip[k].col() + 1], trip[k].row()) - inner);
+      m_built = true;
+      return m_matrix;
+    }
+    double* value = m_matrix.valuePtr();
+    std::fill(value, value + m_matrix.nonZeros(), 0.);
+    const int* slot = m_slot.data();
+    contributions([value, &slot](int, int, double v) { value[*slot++] += v; });
+    CGAL_assertion(slot == m_slot.data() + m_slot.size());
+    return m_matrix;
+  }
+
+private:
+  Sparse_matrix m_matrix;
+  std::vector<int> m_slot; // per contribution, its index in the value array
+  bool m_built = false;
+};
 
 /// ∂E/∂p from per-face ∂E/∂u_t for the cone areas u_t = ½ det[p0, p1, p2]:
 /// ∂u/∂p_k = ½ p_{k+1} × p_{k+2}, evaluated as ½ (N + p_k × (p_{k+2} − p_{k+1}))
@@ -180,6 +235,7 @@ Flow_outcome certified_sphere_flow(const Sphere_problem& P, std::vector<Vec3>& p
   Pattern_reusing_solver<EigenSolver> solver(eigen_solver);
   EigenSolver newton_eigen_solver; // its own symbolic analysis: 2n unknowns
   Pattern_reusing_solver<EigenSolver> newton_solver(newton_eigen_solver);
+  Fixed_pattern_matrix sobolev, newton_matrix;
   double eps_relative = settings.newton_regularization;
   std::vector<double> curvature;
   Vertex_faces around(0, std::vector<Face>());
@@ -231,7 +287,9 @@ Flow_outcome certified_sphere_flow(const Sphere_problem& P, std::vector<Vec3>& p
     // Direction d = −P H g, P the tangent projection, H = K⁻¹ (the Sobolev
     // gradient) far from the targets, L-BFGS-corrected K⁻¹ once D_area < lbfgs_below.
     Clock::time_point tic = Clock::now();
-    const Sparse_matrix K = sphere_sobolev_matrix(p, P.faces, settings.mass_weight);
+    const Sparse_matrix& K = sobolev.assemble(n, [&](auto&& add) {
+      sphere_sobolev_contributions(p, P.faces, settings.mass_weight, add);
+    });
     Clock::time_point toc = Clock::now();
     out.seconds_assembly += std::chrono::duration<double>(toc - tic).count();
     ++out.factorizations;
@@ -241,8 +299,9 @@ Flow_outcome certified_sphere_flow(const Sphere_problem& P, std::vector<Vec3>& p
       const Tangent_frames T(p);
       energy.curvatures(u, curvature);
       double ratio = 1;
-      const Sparse_matrix A = sphere_gauss_newton_matrix(p, P.faces, curvature, settings.barrier_distance, T, K,
-                                                         eps_relative, ratio);
+      const Sparse_matrix& A = newton_matrix.assemble(2 * n, [&](auto&& add) {
+        sphere_gauss_newton_contributions(p, P.faces, curvature, settings.barrier_distance, T, K, eps_relative, ratio, add);
+      });
       const Clock::time_point assembled = Clock::now();
       out.seconds_assembly += std::chrono::duration<double>(assembled - toc).count();
       toc = assembled;
@@ -283,11 +342,16 @@ Flow_outcome certified_sphere_flow(const Sphere_problem& P, std::vector<Vec3>& p
         for(std::size_t v = 0; v < n; ++v) for(int j = 0; j < 3; ++j) q[v][j] -= alpha[i] * pairs_y[i][v][j];
       }
       bool solved = solver.factorize(K);
-      for(int c = 0; c < 3 && solved; ++c) {
-        Eigen::VectorXd b(static_cast<Eigen::Index>(n)), x;
-        for(std::size_t v = 0; v < n; ++v) b[Eigen::Index(v)] = q[v][std::size_t(c)];
-        solved = solver.solve(b, x);
-        if(solved) for(std::size_t v = 0; v < n; ++v) d[v][std::size_t(c)] = x[Eigen::Index(v)];
+      if(solved) {
+        // x, y and z in one solve: one pass over the factor for the three.
+        Eigen::MatrixXd b(Eigen::Index(n), 3);
+        for(std::size_t v = 0; v < n; ++v)
+          for(int c = 0; c < 3; ++c) b(Eigen::Index(v), c) = q[v][std::size_t(c)];
+        const Eigen::MatrixXd x = eigen_solver.solve(b);
+        solved = eigen_solver.info() == Eigen::Success && x.allFinite();
+        if(solved)
+          for(std::size_t v = 0; v < n; ++v)
+            for(int c = 0; c < 3; ++c) d[v][std::size_t(c)] = x(Eigen::Index(v), c);
       }
       if(!solved) {
         out.solver_failed = true;
@@ -318,7 +382,14 @@ Flow_outcome certified_sphere_flow(const Sphere_problem& P, std::vector<Vec3>& p
     for(std::size_t f = 0; f < P.faces.size(); ++f) {
       const Face& t = P.faces[f];
       const std::size_t a = std::size_t(t[0]), b = std::size_t(t[1]), c = std::size_t(t[2]);
-      const double r = critical_step_sphere(p[a], p[b], p[c], d[a], d[b], d[c]);
+      const std::array<double, 4> k = orientation_cubic(p[a], p[b], p[c], d[a], d[b], d[c]);
+      // Most faces cannot invert before the smallest root found so far: the
+      // cubic stays above k3 − (|k2| + (|k1| + |k0| λ) λ) λ > 0 on [0, λ]
+      // (a margin far above the rounding of these positive terms). Skip their
+      // root search; the minimum is unchanged.
+      if(((std::abs(k[0]) * lambda_crit + std::abs(k[1])) * lambda_crit + std::abs(k[2])) * lambda_crit < (1 - 1e-9) * k[3])
+        continue;
+      const double r = smallest_positive_root(k[0], k[1], k[2], k[3]);
       if(r < lambda_crit) { lambda_crit = r; limiting = int(f); }
     }
     double lambda = opt.fixed_step > 0 ? opt.fixed_step

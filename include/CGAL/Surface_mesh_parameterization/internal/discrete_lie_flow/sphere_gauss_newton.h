@@ -78,20 +78,35 @@ inline std::array<Vec3, 3> barrier_area_gradients(const std::vector<Vec3>& p, co
   return G;
 }
 
-/// H + ε S in the tangent frames (2 unknowns per vertex, x of vertex i at
-/// 2i, 2i + 1): H = Σ_t w_t g_t g_tᵀ with g_t the tangential gradient of
+/// The same gradient for corner `k` alone (the vertex-by-vertex relaxation
+/// needs one corner per face; same arithmetic, same values).
+inline Vec3 barrier_area_gradient(const std::vector<Vec3>& p, const Face& t, int k, double h0)
+{
+  const Vec3 N = cross(sub(p[std::size_t(t[1])], p[std::size_t(t[0])]), sub(p[std::size_t(t[2])], p[std::size_t(t[0])]));
+  const double l = std::sqrt(dot(N, N));
+  const Vec3 n = {{ N[0] / l, N[1] / l, N[2] / l }};
+  const double s = dot(p[std::size_t(t[0])], N) / (l * h0);
+  const double wl = s < 1 ? s * s : 1, wc = s < 1 ? (2 - 2 * s) / h0 : 0;
+  const Vec3 e = sub(p[std::size_t(t[(k + 2) % 3])], p[std::size_t(t[(k + 1) % 3])]);
+  const Vec3 dl = cross(n, e), c = cross(p[std::size_t(t[k])], e);
+  Vec3 G;
+  for(int j = 0; j < 3; ++j) G[std::size_t(j)] = 0.5 * (wl * dl[j] + wc * (N[j] + c[j]));
+  return G;
+}
+
+/// Calls `add(i, j, v)` for every contribution to H + ε S in the tangent
+/// frames (2 unknowns per vertex, x of vertex i at 2i, 2i + 1), always in
+/// the same order: H = Σ_t w_t g_t g_tᵀ with g_t the tangential gradient of
 /// u_t, S the Sobolev metric `K` (n × n, one copy per coordinate) seen
 /// through the frames. The diagonal of H weighs each face by e_t''(u_t).
-/// Returns tr(H) / tr(S) in `ratio` so that the caller can scale ε.
-inline Sparse_matrix sphere_gauss_newton_matrix(const std::vector<Vec3>& p, const std::vector<Face>& faces,
-                                                const std::vector<double>& w, double h0, const Tangent_frames& T,
-                                                const Sparse_matrix& K, double eps_relative, double& ratio)
+/// Returns tr(H) / tr(S) in `ratio`; ε = `eps_relative` × ratio.
+template <class Add>
+void sphere_gauss_newton_contributions(const std::vector<Vec3>& p, const std::vector<Face>& faces,
+                                       const std::vector<double>& w, double h0, const Tangent_frames& T,
+                                       const Sparse_matrix& K, double eps_relative, double& ratio, Add&& add)
 {
-  const std::size_t n = p.size();
-  std::vector<Eigen::Triplet<double> > trip;
-  trip.reserve(faces.size() * 36 + std::size_t(K.nonZeros()) * 4);
   double trace_H = 0;
-  std::vector<std::array<double, 2> > g(3);
+  std::array<std::array<double, 2>, 3> g;
   for(std::size_t f = 0; f < faces.size(); ++f) {
     const Face& t = faces[f];
     const std::array<Vec3, 3> G = barrier_area_gradients(p, t, h0);
@@ -101,7 +116,7 @@ inline Sparse_matrix sphere_gauss_newton_matrix(const std::vector<Vec3>& p, cons
         for(int a = 0; a < 2; ++a)
           for(int b = 0; b < 2; ++b) {
             const double v = w[f] * g[std::size_t(k)][std::size_t(a)] * g[std::size_t(l)][std::size_t(b)];
-            trip.emplace_back(2 * t[k] + a, 2 * t[l] + b, v);
+            add(2 * t[k] + a, 2 * t[l] + b, v);
             if(k == l && a == b) trace_H += v;
           }
   }
@@ -118,11 +133,23 @@ inline Sparse_matrix sphere_gauss_newton_matrix(const std::vector<Vec3>& p, cons
       const double m00 = dot(T.e1[i], T.e1[j]), m01 = dot(T.e1[i], T.e2[j]);
       const double m10 = dot(T.e2[i], T.e1[j]), m11 = dot(T.e2[i], T.e2[j]);
       const double v = eps * it.value();
-      trip.emplace_back(int(2 * i), int(2 * j), v * m00);
-      trip.emplace_back(int(2 * i), int(2 * j + 1), v * m01);
-      trip.emplace_back(int(2 * i + 1), int(2 * j), v * m10);
-      trip.emplace_back(int(2 * i + 1), int(2 * j + 1), v * m11);
+      add(int(2 * i), int(2 * j), v * m00);
+      add(int(2 * i), int(2 * j + 1), v * m01);
+      add(int(2 * i + 1), int(2 * j), v * m10);
+      add(int(2 * i + 1), int(2 * j + 1), v * m11);
     }
+}
+
+/// H + ε S (see sphere_gauss_newton_contributions) as a matrix.
+inline Sparse_matrix sphere_gauss_newton_matrix(const std::vector<Vec3>& p, const std::vector<Face>& faces,
+                                                const std::vector<double>& w, double h0, const Tangent_frames& T,
+                                                const Sparse_matrix& K, double eps_relative, double& ratio)
+{
+  const std::size_t n = p.size();
+  std::vector<Eigen::Triplet<double> > trip;
+  trip.reserve(faces.size() * 36 + std::size_t(K.nonZeros()) * 4);
+  sphere_gauss_newton_contributions(p, faces, w, h0, T, K, eps_relative, ratio,
+                                    [&trip](int i, int j, double v) { trip.emplace_back(i, j, v); });
   Sparse_matrix A(Eigen::Index(2 * n), Eigen::Index(2 * n));
   A.setFromTriplets(trip.begin(), trip.end());
   A.makeCompressed();

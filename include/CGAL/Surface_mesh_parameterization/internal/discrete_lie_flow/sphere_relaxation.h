@@ -71,7 +71,7 @@ inline Relaxation_outcome relax_sphere_vertices(const std::vector<Face>& faces, 
     Vertex_model model;
     for(std::size_t i = begin; i < end; ++i) {
       const std::size_t f = around.of[i].first;
-      const Vec3 G = barrier_area_gradients(p, faces[f], h0)[std::size_t(around.of[i].second)];
+      const Vec3 G = barrier_area_gradient(p, faces[f], around.of[i].second, h0);
       const double c = energy.weight(f);
       model.add(K - U * c / (u[f] * u[f]), 2 * U * c / (u[f] * u[f] * u[f]), dot(e1, G), dot(e2, G));
     }
