@@ -480,6 +480,40 @@ TEST(Sphere_flow, GaussNewtonMatrixIsItsDefinition)
   }
 }
 
+// The flow refills its matrices in place (Fixed_pattern_matrix): after the
+// first assembly, the same contributions for other points must give exactly
+// (bit for bit) what setFromTriplets gives, pattern included.
+TEST(Sphere_flow, FixedPatternRefillIsSetFromTriplets)
+{
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> U(-1, 1);
+  const SM sm = read_sphere_mesh("sphere");
+  const Index_mesh m = index_mesh(sm);
+  D::Fixed_pattern_matrix K, A;
+  for(int round = 0; round < 3; ++round) {
+    std::vector<V3> p;
+    for(const V3& q : m.xyz) p.push_back(D::normalized(V3{{ q[0] + 0.01 * U(rng), q[1] + 0.01 * U(rng), q[2] + 0.01 * U(rng) }}));
+    const D::Sparse_matrix S = D::sphere_sobolev_matrix(p, m.faces, 0.1);
+    const D::Sparse_matrix& S2 = K.assemble(p.size(), [&](auto&& add) { D::sphere_sobolev_contributions(p, m.faces, 0.1, add); });
+    const D::Tangent_frames T(p);
+    std::vector<double> w(m.faces.size());
+    for(double& x : w) x = 1 + U(rng) * U(rng);
+    double ratio = 0, ratio2 = 0;
+    const D::Sparse_matrix H = D::sphere_gauss_newton_matrix(p, m.faces, w, 0.99, T, S, 1e-2, ratio);
+    const D::Sparse_matrix& H2 = A.assemble(2 * p.size(), [&](auto&& add) {
+      D::sphere_gauss_newton_contributions(p, m.faces, w, 0.99, T, S2, 1e-2, ratio2, add);
+    });
+    EXPECT_EQ(ratio, ratio2);
+    for(const auto& pair : { std::make_pair(&S, &S2), std::make_pair(&H, &H2) }) {
+      const D::Sparse_matrix &X = *pair.first, &Y = *pair.second;
+      ASSERT_EQ(X.nonZeros(), Y.nonZeros());
+      EXPECT_TRUE(std::equal(X.outerIndexPtr(), X.outerIndexPtr() + X.outerSize() + 1, Y.outerIndexPtr()));
+      EXPECT_TRUE(std::equal(X.innerIndexPtr(), X.innerIndexPtr() + X.nonZeros(), Y.innerIndexPtr()));
+      EXPECT_TRUE(std::equal(X.valuePtr(), X.valuePtr() + X.nonZeros(), Y.valuePtr()));
+    }
+  }
+}
+
 struct Sphere_case
 {
   const char* name;
