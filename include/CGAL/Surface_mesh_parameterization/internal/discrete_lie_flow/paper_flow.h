@@ -102,8 +102,9 @@ inline void guard_collapses(const std::vector<Vec2>& uv, const std::vector<Face>
     for(std::size_t t = 0; t < faces.size(); ++t) {
       const Face& f = faces[t];
       if(!changed[f[0]] && !changed[f[1]] && !changed[f[2]]) continue;
+      if(!((u[t] / U) < (target[t] / T))) continue; // only faces below their target are guarded
       const double r = critical_step_2(uv[f[0]], uv[f[1]], uv[f[2]], vel[f[0]], vel[f[1]], vel[f[2]]);
-      if(r < settings.guard_step && (u[t] / U) < (target[t] / T)) hits.emplace_back(r, t);
+      if(r < settings.guard_step) hits.emplace_back(r, t);
     }
     if(hits.empty()) return;
     std::sort(hits.begin(), hits.end());
