@@ -177,7 +177,7 @@ struct Discrete_lie_flow_options
   double step_cap = 1.0;
   /// Plateau test: stop when the best D_area improved by less than this
   /// relative amount over `plateau_window` iterations (paper mode: at least
-  /// 3e-4).
+  /// 3e-4, and a slow-tail test besides); 0 turns plateau detection off.
   double plateau_tolerance = 1e-4;
   std::size_t plateau_window = 10;
   /// Paper mode: flip the flowing mesh to Delaunay before each solve.

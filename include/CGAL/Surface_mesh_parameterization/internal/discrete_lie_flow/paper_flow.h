@@ -323,11 +323,12 @@ Flow_outcome paper_disk_flow(const Disk_problem& P, std::vector<Vec2>& uv, Bound
     if(limiting == last_limiting && lambda < 1e-3 * opt.step_cap) ++same_limiting; else same_limiting = 0;
     last_limiting = limiting;
     if(same_limiting >= opt.stall_window) { out.stop_reason = Discrete_lie_flow_stop_reason::STALLED; break; }
-    if(best_history.size() > opt.plateau_window) {
+    // A plateau tolerance of 0 turns both plateau tests off (the paper's Table 2).
+    if(opt.plateau_tolerance > 0 && best_history.size() > opt.plateau_window) {
       const double old = best_history[best_history.size() - 1 - opt.plateau_window];
       if(old - best < (std::max)(opt.plateau_tolerance, settings.plateau_tolerance) * (best - 1)) { out.stop_reason = Discrete_lie_flow_stop_reason::PLATEAU; break; }
     }
-    if(settings.tail_rate > 0 && best_history.size() > settings.tail_window) {
+    if(opt.plateau_tolerance > 0 && settings.tail_rate > 0 && best_history.size() > settings.tail_window) {
       const double old = best_history[best_history.size() - 1 - settings.tail_window];
       if(old - best < settings.tail_rate * (best - 2)) { out.stop_reason = Discrete_lie_flow_stop_reason::PLATEAU; break; }
     }
