@@ -17,9 +17,10 @@
 
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/cotangent_laplacian.h>
 
+#include <CGAL/assertions.h>
+
 #include <Eigen/Sparse>
 
-#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -29,9 +30,9 @@ namespace internal {
 namespace dlf {
 
 /// H + ε S over the dofs: `first[v]`/`count[v]` give vertex v's dofs (0, 1
-/// or 2, fixed for the run), `basis[a]` the direction of dof a. The pattern
-/// (every pair of dofs of one face) and each face's 6 × 6 slots are built on
-/// the first call; later calls only add numbers, as in the Sobolev assembly.
+/// or 2, fixed for the run), `basis[a]` the direction of dof a. H and S are
+/// refilled in the same fixed pattern (every pair of dofs of one face), so
+/// A = H + ε S is a sum of value arrays.
 class Planar_gauss_newton_system
 {
 public:
@@ -44,92 +45,88 @@ public:
   const Sparse_matrix& assemble(const std::vector<Vec2>& uv, const std::vector<Face>& faces,
                                 const std::vector<Vec2>& basis, const std::vector<double>& w, double eps_relative)
   {
-    if(m_slots.empty()) build_pattern(faces);
-    m_h.assign(std::size_t(m_A.nonZeros()), 0.);
-    m_s.assign(std::size_t(m_A.nonZeros()), 0.);
     double trace_H = 0, trace_S = 0;
-    std::array<int, 6> dof, vertex_of;
-    std::array<double, 6> J;  // ∂u_t/∂dof
-    std::array<Vec2, 6> e;
-    const int* slot = m_slots.data();
-    for(std::size_t t = 0; t < faces.size(); ++t, slot += 36) {
-      const Face& f = faces[t];
-      int m = 0;
-      for(int k = 0; k < 3; ++k) {
-        const std::size_t v = std::size_t(f[k]);
-        const Vec2& a = uv[std::size_t(f[(k + 1) % 3])];
-        const Vec2& b = uv[std::size_t(f[(k + 2) % 3])];
-        for(int j = 0; j < m_count[v]; ++j, ++m) {
-          dof[std::size_t(m)] = m_first[v] + j;
-          vertex_of[std::size_t(m)] = k;
-          e[std::size_t(m)] = basis[std::size_t(m_first[v] + j)];
-          J[std::size_t(m)] = 0.5 * ((a[1] - b[1]) * e[std::size_t(m)][0] + (b[0] - a[0]) * e[std::size_t(m)][1]);
+    const Sparse_matrix& H = m_H.assemble(std::size_t(m_size), [&](auto&& add) {
+      trace_H = 0;
+      for_each_face(uv, faces, basis, [&](std::size_t t, int m, const Local& l) {
+        for(int i = 0; i < m; ++i)
+          for(int j = 0; j < m; ++j) {
+            const double v = w[t] * l.J[std::size_t(i)] * l.J[std::size_t(j)];
+            add(l.dof[std::size_t(i)], l.dof[std::size_t(j)], v);
+            if(i == j) trace_H += v;
+          }
+      });
+    });
+    const Sparse_matrix& S = m_S.assemble(std::size_t(m_size), [&](auto&& add) {
+      trace_S = 0;
+      for_each_face(uv, faces, basis, [&](std::size_t t, int m, const Local& l) {
+        // The face's Dirichlet stiffness between its corners: the half
+        // cotangent of the opposite corner off the diagonal, the two
+        // incident edges' on it.
+        const Face& f = faces[t];
+        const std::array<double, 3> c = half_cotangents(uv[std::size_t(f[0])], uv[std::size_t(f[1])], uv[std::size_t(f[2])]);
+        double stiffness[3][3];
+        for(int k = 0; k < 3; ++k) {
+          stiffness[k][k] = c[std::size_t((k + 1) % 3)] + c[std::size_t((k + 2) % 3)];
+          const int i = (k + 1) % 3, j = (k + 2) % 3;
+          stiffness[i][j] = stiffness[j][i] = -c[std::size_t(k)];
         }
-      }
-      // The face's Dirichlet stiffness between corners k and l: Σ over its
-      // edges of the half cotangent times (δ_k − δ_l) differences.
-      const std::array<double, 3> c = half_cotangents(uv[std::size_t(f[0])], uv[std::size_t(f[1])], uv[std::size_t(f[2])]);
-      double stiffness[3][3];
-      for(int k = 0; k < 3; ++k) stiffness[k][k] = c[std::size_t((k + 1) % 3)] + c[std::size_t((k + 2) % 3)];
-      for(int k = 0; k < 3; ++k) {
-        const int i = (k + 1) % 3, j = (k + 2) % 3; // edge opposite corner k
-        stiffness[i][j] = stiffness[j][i] = -c[std::size_t(k)];
-      }
-      for(int i = 0; i < m; ++i)
-        for(int j = 0; j < m; ++j) {
-          const int sl = slot[6 * i + j];
-          const double hv = w[t] * J[std::size_t(i)] * J[std::size_t(j)];
-          const Vec2& ei = e[std::size_t(i)];
-          const Vec2& ej = e[std::size_t(j)];
-          const double sv = stiffness[vertex_of[std::size_t(i)]][vertex_of[std::size_t(j)]] * (ei[0] * ej[0] + ei[1] * ej[1]);
-          m_h[std::size_t(sl)] += hv;
-          m_s[std::size_t(sl)] += sv;
-          if(i == j) { trace_H += hv; trace_S += sv; }
-        }
-    }
+        for(int i = 0; i < m; ++i)
+          for(int j = 0; j < m; ++j) {
+            const Vec2& ei = l.e[std::size_t(i)];
+            const Vec2& ej = l.e[std::size_t(j)];
+            const double v = stiffness[l.corner[std::size_t(i)]][l.corner[std::size_t(j)]] * (ei[0] * ej[0] + ei[1] * ej[1]);
+            add(l.dof[std::size_t(i)], l.dof[std::size_t(j)], v);
+            if(i == j) trace_S += v;
+          }
+      });
+    });
+    CGAL_assertion(S.nonZeros() == H.nonZeros()); // the same contributions' pattern
+    if(m_A.nonZeros() != H.nonZeros()) m_A = H;
     const double eps = eps_relative * (trace_S > 0 ? trace_H / trace_S : 1);
-    double* values = m_A.valuePtr();
-    for(std::size_t k = 0; k < m_h.size(); ++k) values[k] = m_h[k] + eps * m_s[k];
+    const double *h = H.valuePtr(), *s = S.valuePtr();
+    double* a = m_A.valuePtr();
+    for(Eigen::Index k = 0; k < m_A.nonZeros(); ++k) a[k] = h[k] + eps * s[k];
     return m_A;
   }
 
 private:
-  void build_pattern(const std::vector<Face>& faces)
+  /// A face's dofs (up to six), their corners, directions and ∂u_t/∂dof.
+  struct Local
   {
-    std::vector<Eigen::Triplet<double> > trip;
-    std::vector<int> dofs;
-    for(const Face& f : faces) {
-      dofs.clear();
-      for(int k = 0; k < 3; ++k)
-        for(int j = 0; j < m_count[std::size_t(f[k])]; ++j) dofs.push_back(m_first[std::size_t(f[k])] + j);
-      for(int a : dofs)
-        for(int b : dofs) trip.emplace_back(a, b, 1.);
-    }
-    m_A.resize(m_size, m_size);
-    m_A.setFromTriplets(trip.begin(), trip.end());
-    m_A.makeCompressed();
-    m_slots.assign(faces.size() * 36, -1);
-    int* slot = m_slots.data();
-    for(const Face& f : faces) {
-      dofs.clear();
-      for(int k = 0; k < 3; ++k)
-        for(int j = 0; j < m_count[std::size_t(f[k])]; ++j) dofs.push_back(m_first[std::size_t(f[k])] + j);
-      for(std::size_t i = 0; i < dofs.size(); ++i)
-        for(std::size_t j = 0; j < dofs.size(); ++j) {
-          const int* inner = m_A.innerIndexPtr();
-          const int* lo = inner + m_A.outerIndexPtr()[dofs[j]];
-          const int* hi = inner + m_A.outerIndexPtr()[dofs[j] + 1];
-          slot[6 * i + j] = int(std::lower_bound(lo, hi, dofs[i]) - inner);
+    std::array<int, 6> dof, corner;
+    std::array<Vec2, 6> e;
+    std::array<double, 6> J;
+  };
+
+  /// Calls f(t, m, local) for every face t, m its number of dofs.
+  template <class F>
+  void for_each_face(const std::vector<Vec2>& uv, const std::vector<Face>& faces, const std::vector<Vec2>& basis, F&& f) const
+  {
+    Local l;
+    for(std::size_t t = 0; t < faces.size(); ++t) {
+      const Face& fc = faces[t];
+      int m = 0;
+      for(int k = 0; k < 3; ++k) {
+        const std::size_t v = std::size_t(fc[k]);
+        const Vec2& a = uv[std::size_t(fc[(k + 1) % 3])];
+        const Vec2& b = uv[std::size_t(fc[(k + 2) % 3])];
+        for(int j = 0; j < m_count[v]; ++j, ++m) {
+          const std::size_t i = std::size_t(m);
+          l.dof[i] = m_first[v] + j;
+          l.corner[i] = k;
+          l.e[i] = basis[std::size_t(l.dof[i])];
+          l.J[i] = 0.5 * ((a[1] - b[1]) * l.e[i][0] + (b[0] - a[0]) * l.e[i][1]);
         }
-      slot += 36;
+      }
+      f(t, m, l);
     }
   }
 
   std::vector<int> m_first, m_count;
   int m_size;
+  Fixed_pattern_matrix m_H, m_S;
   Sparse_matrix m_A;
-  std::vector<double> m_h, m_s;
-  std::vector<int> m_slots; // per face, 6 × 6 positions in m_A's values
 };
 
 } // namespace dlf

@@ -32,8 +32,6 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_problem.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_relaxation.h>
 
-#include <CGAL/assertions.h>
-
 #include <Eigen/Sparse>
 
 #include <algorithm>
@@ -132,48 +130,6 @@ inline Sparse_matrix sphere_sobolev_matrix(const std::vector<Vec3>& p, const std
   K.makeCompressed();
   return K;
 }
-
-/// A square sparse matrix whose pattern the mesh fixes, assembled from the
-/// same contributions in the same order at every iteration. The first
-/// assembly sorts them (setFromTriplets) and records where each one lands;
-/// later ones add them straight into the value array, which gives the same
-/// sums in the same order (bit-identical values) without the sort, and the
-/// same pattern keeps the solver's symbolic analysis.
-class Fixed_pattern_matrix
-{
-public:
-  /// `contributions(add)` calls add(i, j, v) for each contribution.
-  template <class Contributions>
-  const Sparse_matrix& assemble(std::size_t n, Contributions&& contributions)
-  {
-    if(!m_built || std::size_t(m_matrix.rows()) != n) {
-      std::vector<Eigen::Triplet<double> > trip;
-      trip.reserve(m_slot.size());
-      contributions([&trip](int i, int j, double v) { trip.emplace_back(i, j, v); });
-      m_matrix.resize(Eigen::Index(n), Eigen::Index(n));
-      m_matrix.setFromTriplets(trip.begin(), trip.end());
-      m_matrix.makeCompressed();
-      const int* outer = m_matrix.outerIndexPtr();
-      const int* inner = m_matrix.innerIndexPtr();
-      m_slot.resize(trip.size());
-      for(std::size_t k = 0; k < trip.size(); ++k)
-        m_slot[k] = int(std::lower_bound(inner + outer[trip[k].col()], inner + outer[trip[k].col() + 1], trip[k].row()) - inner);
-      m_built = true;
-      return m_matrix;
-    }
-    double* value = m_matrix.valuePtr();
-    std::fill(value, value + m_matrix.nonZeros(), 0.);
-    const int* slot = m_slot.data();
-    contributions([value, &slot](int, int, double v) { value[*slot++] += v; });
-    CGAL_assertion(slot == m_slot.data() + m_slot.size());
-    return m_matrix;
-  }
-
-private:
-  Sparse_matrix m_matrix;
-  std::vector<int> m_slot; // per contribution, its index in the value array
-  bool m_built = false;
-};
 
 /// ∂E/∂p from per-face ∂E/∂u_t for the cone areas u_t = ½ det[p0, p1, p2]:
 /// ∂u/∂p_k = ½ p_{k+1} × p_{k+2}, evaluated as ½ (N + p_k × (p_{k+2} − p_{k+1}))
