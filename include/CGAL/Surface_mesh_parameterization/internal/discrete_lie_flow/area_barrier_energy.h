@@ -6,6 +6,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_AREA_BARRIER_ENERGY_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_AREA_BARRIER_ENERGY_H
 
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -52,6 +53,7 @@ public:
 
   /// c_t = (A_t / Σ A)².
   double weight(std::size_t t) const { return m_c[t]; }
+  std::size_t size() const { return m_c.size(); }
 
   /// The diagonal of the Hessian, ∂²E/∂u_t² ≈ 2 U c_t / u_t³ (the
   /// O(1/U²) terms of the global coupling through U dropped: they are a
@@ -66,6 +68,50 @@ public:
 
 private:
   std::vector<double> m_c;
+};
+
+/// The opening's energy L = Σ w_t (log r_t)², w_t = A_t / Σ A and r_t as
+/// above. Its gradient ∂L/∂u_t = 2 (w_t log r_t − u_t Σ_s w_s log r_s / U) / u_t
+/// weighs a face by its log ratio where E's weighs it by 1/r_t: far from
+/// the targets the Sobolev gradient of E spends each step on its few
+/// smallest faces, that of L moves every face by its own ratio.
+class Log_ratio_energy
+{
+public:
+  explicit Log_ratio_energy(const Area_barrier_energy& barrier) : m_w(barrier.size())
+  {
+    for(std::size_t t = 0; t < m_w.size(); ++t) m_w[t] = std::sqrt(barrier.weight(t));
+  }
+  /// L(u), +∞ when a face is not positive.
+  double value(const std::vector<double>& u) const
+  {
+    double U = 0;
+    for(double x : u) {
+      if(!(x > 0)) return std::numeric_limits<double>::infinity();
+      U += x;
+    }
+    double L = 0;
+    for(std::size_t t = 0; t < u.size(); ++t) {
+      const double l = std::log(u[t] / (U * m_w[t]));
+      L += m_w[t] * l * l;
+    }
+    return L;
+  }
+  /// ∂L/∂u_t for every face (u all positive).
+  void derivatives(const std::vector<double>& u, std::vector<double>& dL) const
+  {
+    double U = 0, S = 0;
+    for(double x : u) U += x;
+    dL.resize(u.size());
+    for(std::size_t t = 0; t < u.size(); ++t) {
+      const double wl = m_w[t] * std::log(u[t] / (U * m_w[t]));
+      S += wl;
+      dL[t] = 2 * wl / u[t];
+    }
+    for(double& x : dL) x -= 2 * S / U;
+  }
+private:
+  std::vector<double> m_w;
 };
 
 } // namespace dlf
