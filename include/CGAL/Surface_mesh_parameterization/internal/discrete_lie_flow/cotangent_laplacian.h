@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -99,11 +100,18 @@ public:
   template <class Contributions>
   const Sparse_matrix& assemble(std::size_t n, Contributions&& contributions)
   {
-    if(!m_built || std::size_t(m_matrix.rows()) != n) {
+    return assemble(n, n, std::forward<Contributions>(contributions));
+  }
+
+  /// The same for a `rows` × `cols` matrix.
+  template <class Contributions>
+  const Sparse_matrix& assemble(std::size_t rows, std::size_t cols, Contributions&& contributions)
+  {
+    if(!m_built || std::size_t(m_matrix.rows()) != rows || std::size_t(m_matrix.cols()) != cols) {
       std::vector<Eigen::Triplet<double> > trip;
       trip.reserve(m_slot.size());
       contributions([&trip](int i, int j, double v) { trip.emplace_back(i, j, v); });
-      m_matrix.resize(Eigen::Index(n), Eigen::Index(n));
+      m_matrix.resize(Eigen::Index(rows), Eigen::Index(cols));
       m_matrix.setFromTriplets(trip.begin(), trip.end());
       m_matrix.makeCompressed();
       const int* outer = m_matrix.outerIndexPtr();
@@ -121,6 +129,9 @@ public:
     CGAL_assertion(slot == m_slot.data() + m_slot.size());
     return m_matrix;
   }
+
+  /// The last assembled matrix.
+  const Sparse_matrix& matrix() const { return m_matrix; }
 
 private:
   Sparse_matrix m_matrix;
@@ -149,6 +160,13 @@ public:
   }
 
   bool solve(const Eigen::VectorXd& b, Eigen::VectorXd& x)
+  {
+    x = m_solver.solve(b);
+    return m_solver.info() == Eigen::Success && x.allFinite();
+  }
+
+  /// Several right-hand sides in one pass over the factor.
+  bool solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x)
   {
     x = m_solver.solve(b);
     return m_solver.info() == Eigen::Success && x.allFinite();

@@ -43,38 +43,48 @@ public:
 
   std::size_t analyses() const { return m_solver.analyses(); }
 
-  /// Assembles the cotangent stiffness of `faces` over `uv` straight into
-  /// the fixed patterns of L_II and L_IB (and diag(L_BB)). The patterns and
-  /// the slot of every face's contribution are built on the first call:
-  /// later calls only add numbers.
+  /// Assembles the cotangent stiffness of `faces` over `uv` into L_II and
+  /// L_IB (fixed patterns: after the first call only numbers are added) and
+  /// diag(L_BB).
   void assemble(const std::vector<Vec2>& uv, const std::vector<Face>& faces)
   {
-    if(m_slots.empty()) build_patterns(uv.size(), faces);
-    std::fill(m_LII.valuePtr(), m_LII.valuePtr() + m_LII.nonZeros(), 0.);
-    std::fill(m_LIB.valuePtr(), m_LIB.valuePtr() + m_LIB.nonZeros(), 0.);
-    std::fill(m_diag.begin(), m_diag.end(), 0.);
-    double* vii = m_LII.valuePtr();
-    double* vib = m_LIB.valuePtr();
-    const int* slot = m_slots.data();
-    for(const Face& t : faces) {
-      const std::array<double, 3> w = half_cotangents(uv[t[0]], uv[t[1]], uv[t[2]]);
-      for(int k = 0; k < 3; ++k, slot += 4) {
-        const int i = t[(k + 1) % 3], j = t[(k + 2) % 3];
-        m_diag[std::size_t(i)] += w[k];
-        m_diag[std::size_t(j)] += w[k];
-        // slots: (i,j), (j,i) off-diagonal; (i,i), (j,j) diagonal; ≥ 2^30 marks L_IB
-        for(int e = 0; e < 4; ++e) {
-          const int sl = slot[e];
-          if(sl < 0) continue;
-          const double value = e < 2 ? -w[k] : w[k];
-          if(sl >= ib_mark) vib[sl - ib_mark] += value; else vii[sl] += value;
-        }
+    const std::size_t n = uv.size();
+    m_diag.assign(n, 0.);
+    std::vector<std::array<double, 3> >& w = m_cotangents;
+    w.resize(faces.size());
+    for(std::size_t f = 0; f < faces.size(); ++f) {
+      const Face& t = faces[f];
+      w[f] = half_cotangents(uv[t[0]], uv[t[1]], uv[t[2]]);
+      for(int k = 0; k < 3; ++k) {
+        m_diag[std::size_t(t[(k + 1) % 3])] += w[f][std::size_t(k)];
+        m_diag[std::size_t(t[(k + 2) % 3])] += w[f][std::size_t(k)];
       }
     }
+    // Edge (i, j) opposite corner k: −w off the diagonal, +w on it.
+    const auto edges = [&](auto&& edge) {
+      for(std::size_t f = 0; f < faces.size(); ++f)
+        for(int k = 0; k < 3; ++k)
+          edge(faces[f][(k + 1) % 3], faces[f][(k + 2) % 3], w[f][std::size_t(k)]);
+    };
+    m_LII.assemble(std::size_t(m_ni), std::size_t(m_ni), [&](auto&& add) {
+      edges([&](int i, int j, double c) {
+        const int ii = m_interior[std::size_t(i)], ij = m_interior[std::size_t(j)];
+        if(ii >= 0 && ij >= 0) { add(ii, ij, -c); add(ij, ii, -c); }
+        if(ii >= 0) add(ii, ii, c);
+        if(ij >= 0) add(ij, ij, c);
+      });
+    });
+    m_LIB.assemble(std::size_t(m_ni), n, [&](auto&& add) {
+      edges([&](int i, int j, double c) {
+        const int ii = m_interior[std::size_t(i)], ij = m_interior[std::size_t(j)];
+        if(ii >= 0 && ij < 0) add(ii, j, -c);
+        if(ij >= 0 && ii < 0) add(ij, i, -c);
+      });
+    });
   }
 
   /// Factorises the assembled L_II.
-  bool factorize() { return m_ni == 0 || m_solver.factorize(m_LII); }
+  bool factorize() { return m_ni == 0 || m_solver.factorize(L_II()); }
 
   /// Direction (per vertex, 2D) and its boundary slides, for the gradient
   /// `g` (per vertex, 2D); `tangent[v]` is the unit tangent of a sliding
@@ -88,7 +98,7 @@ public:
       if(m_interior[v] >= 0) { gi(m_interior[v], 0) = g[v][0]; gi(m_interior[v], 1) = g[v][1]; }
     if(m_ni > 0 && !solve_interior(-gi, z)) return false;
     // Boundary: s = −S̃⁻¹ Tᵀ (g_B + L_BI z).
-    Eigen::MatrixXd lbz = (m_ni > 0) ? Eigen::MatrixXd(m_LIB.transpose() * z) : Eigen::MatrixXd::Zero(Eigen::Index(n), 2);
+    Eigen::MatrixXd lbz = (m_ni > 0) ? Eigen::MatrixXd(L_IB().transpose() * z) : Eigen::MatrixXd::Zero(Eigen::Index(n), 2);
     Eigen::MatrixXd db = Eigen::MatrixXd::Zero(Eigen::Index(n), 2);
     for(std::size_t v = 0; v < n; ++v) {
       if(m_interior[v] >= 0 || m_diag[v] <= 0) continue;
@@ -102,7 +112,7 @@ public:
     // Interior: z − A⁻¹ C d_B, the harmonic follow-up of the boundary move.
     if(m_ni > 0) {
       Eigen::MatrixXd w;
-      if(!solve_interior(Eigen::MatrixXd(m_LIB * db), w)) return false;
+      if(!solve_interior(Eigen::MatrixXd(L_IB() * db), w)) return false;
       z -= w;
       for(std::size_t v = 0; v < n; ++v)
         if(m_interior[v] >= 0) d[v] = {{ z(m_interior[v], 0), z(m_interior[v], 1) }};
@@ -111,65 +121,18 @@ public:
   }
 
 private:
-  static const int ib_mark = 1 << 30;
+  const Sparse_matrix& L_II() const { return m_LII.matrix(); }
+  const Sparse_matrix& L_IB() const { return m_LIB.matrix(); }
 
-  void build_patterns(std::size_t n, const std::vector<Face>& faces)
-  {
-    std::vector<Eigen::Triplet<double> > tii, tib;
-    for(const Face& t : faces)
-      for(int k = 0; k < 3; ++k) {
-        const int i = t[(k + 1) % 3], j = t[(k + 2) % 3];
-        const int ii = m_interior[std::size_t(i)], ij = m_interior[std::size_t(j)];
-        if(ii >= 0 && ij >= 0) { tii.emplace_back(ii, ij, 1.); tii.emplace_back(ij, ii, 1.); }
-        if(ii >= 0) tii.emplace_back(ii, ii, 1.);
-        if(ij >= 0) tii.emplace_back(ij, ij, 1.);
-        if(ii >= 0 && ij < 0) tib.emplace_back(ii, j, 1.);
-        if(ij >= 0 && ii < 0) tib.emplace_back(ij, i, 1.);
-      }
-    m_LII.resize(m_ni, m_ni);
-    m_LII.setFromTriplets(tii.begin(), tii.end());
-    m_LII.makeCompressed();
-    m_LIB.resize(m_ni, Eigen::Index(n));
-    m_LIB.setFromTriplets(tib.begin(), tib.end());
-    m_LIB.makeCompressed();
-    m_diag.assign(n, 0.);
-    auto find = [](const Sparse_matrix& M, int r, int c) {
-      const int* inner = M.innerIndexPtr();
-      const int* lo = inner + M.outerIndexPtr()[c];
-      const int* hi = inner + M.outerIndexPtr()[c + 1];
-      return int(std::lower_bound(lo, hi, r) - inner);
-    };
-    m_slots.assign(faces.size() * 12, -1);
-    int* slot = m_slots.data();
-    for(const Face& t : faces)
-      for(int k = 0; k < 3; ++k, slot += 4) {
-        const int i = t[(k + 1) % 3], j = t[(k + 2) % 3];
-        const int ii = m_interior[std::size_t(i)], ij = m_interior[std::size_t(j)];
-        if(ii >= 0 && ij >= 0) { slot[0] = find(m_LII, ii, ij); slot[1] = find(m_LII, ij, ii); }
-        else if(ii >= 0) slot[0] = ib_mark + find(m_LIB, ii, j);
-        else if(ij >= 0) slot[1] = ib_mark + find(m_LIB, ij, i);
-        if(ii >= 0) slot[2] = find(m_LII, ii, ii);
-        if(ij >= 0) slot[3] = find(m_LII, ij, ij);
-      }
-  }
-
-  bool solve_interior(const Eigen::MatrixXd& b, Eigen::MatrixXd& x)
-  {
-    x.resize(b.rows(), b.cols());
-    for(Eigen::Index c = 0; c < b.cols(); ++c) {
-      Eigen::VectorXd xc;
-      if(!m_solver.solve(b.col(c), xc)) return false;
-      x.col(c) = xc;
-    }
-    return true;
-  }
+  // x and y in one pass over the factor.
+  bool solve_interior(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) { return m_solver.solve(b, x); }
 
   std::vector<int> m_interior;
   int m_ni = 0;
   Pattern_reusing_solver<EigenSolver> m_solver;
-  Sparse_matrix m_LII, m_LIB;
+  Fixed_pattern_matrix m_LII, m_LIB;
   std::vector<double> m_diag;
-  std::vector<int> m_slots; // per face, per edge: 4 slots in L_II (or L_IB, offset by ib_mark)
+  std::vector<std::array<double, 3> > m_cotangents; // per face, per corner
 };
 
 } // namespace dlf

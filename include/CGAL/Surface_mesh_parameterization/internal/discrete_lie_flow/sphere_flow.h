@@ -315,8 +315,8 @@ Flow_outcome certified_sphere_flow(const Sphere_problem& P, std::vector<Vec3>& p
         Eigen::MatrixXd b(Eigen::Index(n), 3);
         for(std::size_t v = 0; v < n; ++v)
           for(int c = 0; c < 3; ++c) b(Eigen::Index(v), c) = q[v][std::size_t(c)];
-        const Eigen::MatrixXd x = eigen_solver.solve(b);
-        solved = eigen_solver.info() == Eigen::Success && x.allFinite();
+        Eigen::MatrixXd x;
+        solved = solver.solve(b, x);
         if(solved)
           for(std::size_t v = 0; v < n; ++v)
             for(int c = 0; c < 3; ++c) d[v][std::size_t(c)] = x(Eigen::Index(v), c);
