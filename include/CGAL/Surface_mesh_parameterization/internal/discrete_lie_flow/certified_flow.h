@@ -5,7 +5,7 @@
 // the current domain mesh and its critical-root step, applied to the Sobolev
 // gradient of the barrier energy E = D_area (of the log-ratio energy while far
 // from the targets). Every accepted step keeps every input triangle
-// positively oriented (exact predicate) and lowers E, so the
+// positively oriented (exact predicate) and never raises E, so the
 // last iterate is the best one and no face can collapse (each term
 // w_t / r_t ≤ E bounds the area ratio r_t from below).
 
@@ -151,7 +151,7 @@ struct Planar_flow_settings
   double newton_regularization = 1e-2;
   /// While D_area is above `log_opening_above` (0: never) the direction is
   /// the Sobolev gradient of the log-ratio energy L (area_barrier_energy.h)
-  /// and a step must lower both L (Armijo) and E. Measured (circle, default
+  /// and a step must lower L (Armijo) and not raise E. Measured (circle, default
   /// tolerance, Tutte start): lion-head 16 → 10 iterations, mannequin-devil
   /// 21 → 15, mushroom 8 → 5; a region scaled by 16 at tolerance 5e-4:
   /// mushroom reaches D_area 2.05 in 8 iterations instead of 12.
