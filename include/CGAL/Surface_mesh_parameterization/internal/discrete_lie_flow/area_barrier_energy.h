@@ -70,6 +70,89 @@ private:
   std::vector<double> m_c;
 };
 
+/// D_area with other face weights, for the spherical polish (sphere_flow.h):
+/// E = Σ ω_t (r_t + 1/r_t) with r_t = (u_t/U)/a_t as above, a_t = A_t/Σ A,
+/// and ω_t = (1 − β) a_t + β/F. With α_t = ω_t/a_t and c_t = ω_t a_t,
+/// E = P/U + U K, P = Σ α_t u_t, K = Σ c_t/u_t (β = 0: P = U, the energy
+/// above). The minimum is still r ≡ 1; the weights decide where the residual
+/// sits when it cannot vanish: area weights leave it on the small faces,
+/// which the mean |log area ratio| counts like the others.
+class Weighted_area_energy
+{
+public:
+  /// The running sums of a configuration (updated face by face by the sweeps).
+  struct Sums
+  {
+    double U = 0, K = 0, P = 0;
+  };
+
+  Weighted_area_energy(const std::vector<double>& target, double uniform_share)
+    : m_a(target.size()), m_alpha(target.size()), m_c(target.size())
+  {
+    double T = 0;
+    for(double x : target) T += x;
+    const double F = double(target.size());
+    for(std::size_t t = 0; t < target.size(); ++t) {
+      m_a[t] = target[t] / T;
+      const double w = (1 - uniform_share) * m_a[t] + uniform_share / F;
+      m_alpha[t] = w / m_a[t];
+      m_c[t] = w * m_a[t];
+    }
+  }
+
+  /// The sums of u (all positive).
+  Sums sums(const std::vector<double>& u) const
+  {
+    Sums s;
+    for(std::size_t t = 0; t < u.size(); ++t) {
+      s.U += u[t];
+      s.P += m_alpha[t] * u[t];
+      s.K += m_c[t] / u[t];
+    }
+    return s;
+  }
+  /// Face t's element goes from `from` to `to` (both positive).
+  void change(Sums& s, std::size_t t, double from, double to) const
+  {
+    s.U += to - from;
+    s.P += m_alpha[t] * (to - from);
+    s.K += m_c[t] * (1 / to - 1 / from);
+  }
+  double value(const Sums& s) const { return s.P / s.U + s.U * s.K; }
+  /// E(u), +∞ when a face is not positive.
+  double value(const std::vector<double>& u) const
+  {
+    for(double x : u)
+      if(!(x > 0)) return std::numeric_limits<double>::infinity();
+    return value(sums(u));
+  }
+  /// ∂E/∂u_t at u_t = x.
+  double derivative(const Sums& s, std::size_t t, double x) const
+  {
+    return m_alpha[t] / s.U - s.P / (s.U * s.U) + s.K - s.U * m_c[t] / (x * x);
+  }
+  /// ∂²E/∂u_t² ≈ 2 U c_t / u_t³ (as Area_barrier_energy::curvatures).
+  double curvature(const Sums& s, std::size_t t, double x) const { return 2 * s.U * m_c[t] / (x * x * x); }
+  void derivatives(const std::vector<double>& u, std::vector<double>& dE) const
+  {
+    const Sums s = sums(u);
+    dE.resize(u.size());
+    for(std::size_t t = 0; t < u.size(); ++t) dE[t] = derivative(s, t, u[t]);
+  }
+  void curvatures(const std::vector<double>& u, std::vector<double>& w) const
+  {
+    const Sums s = sums(u);
+    w.resize(u.size());
+    for(std::size_t t = 0; t < u.size(); ++t) w[t] = curvature(s, t, u[t]);
+  }
+  /// a_t, face t's share of the target area.
+  double share(std::size_t t) const { return m_a[t]; }
+  std::size_t size() const { return m_a.size(); }
+
+private:
+  std::vector<double> m_a, m_alpha, m_c;
+};
+
 /// The opening's energy L = Σ w_t (log r_t)², w_t = A_t / Σ A and r_t as
 /// above. Its gradient ∂L/∂u_t = 2 (w_t log r_t − u_t Σ_s w_s log r_s / U) / u_t
 /// weighs a face by its log ratio where E's weighs it by 1/r_t: far from

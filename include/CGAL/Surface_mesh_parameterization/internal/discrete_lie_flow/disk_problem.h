@@ -120,41 +120,20 @@ struct Relaxation_outcome
 };
 
 /// The line search of one vertex's relaxation move, shared by the plane and
-/// the sphere. The vertex's faces are `around.of[begin, end)`; `at(λ)` is
-/// its trial position, `area(f, k, x)` the area element of face f with the
-/// vertex (its corner k) at x, `certified(f, k, x)` the exact orientation
-/// check. From `lambda`, at most 8 halvings until every face stays
-/// positive, E = 1 + U K passes Armijo and the exact predicate agrees; then
-/// u, U and K are updated and true is returned with the position in `moved`.
-template <class Point, class Position, class Area, class Certified>
-bool relaxation_line_search(const Vertex_faces& around, std::size_t begin, std::size_t end,
-                            const Area_barrier_energy& energy, double lambda, double slope,
-                            const Position& at, const Area& area, const Certified& certified,
-                            std::vector<double>& u, std::vector<double>& u_new, double& U, double& K,
-                            Point& moved, Relaxation_outcome& out)
+/// the sphere: `at(λ)` is the vertex's trial position, `energy(x)` the total
+/// energy with the vertex at x (+∞ when one of its faces is not positive;
+/// the caller keeps what it needs to commit the move), `certified(x)` the
+/// exact orientation check of its faces. From `lambda`, at most 8 halvings
+/// until the energy passes Armijo against `E` and the exact predicate
+/// agrees; then true, with the position in `moved`.
+template <class Point, class Position, class Energy, class Certified>
+bool relaxation_line_search(double E, double lambda, double slope, const Position& at, const Energy& energy,
+                            const Certified& certified, Point& moved, Relaxation_outcome& out)
 {
-  const double E = 1 + U * K;
-  u_new.resize(end - begin);
   for(int halvings = 0; halvings < 8; ++halvings, lambda *= 0.5) {
     moved = at(lambda);
-    double dU = 0, dK = 0;
-    bool positive = true;
-    for(std::size_t i = begin; i < end && positive; ++i) {
-      const std::size_t f = around.of[i].first;
-      const double un = area(f, around.of[i].second, moved);
-      if(!(un > 0)) { positive = false; break; }
-      u_new[i - begin] = un;
-      dU += un - u[f];
-      dK += energy.weight(f) * (1 / un - 1 / u[f]);
-    }
-    if(!positive) continue;
-    if(!(1 + (U + dU) * (K + dK) <= E + 1e-4 * lambda * slope)) continue;
-    bool exact = true;
-    for(std::size_t i = begin; i < end && exact; ++i) exact = certified(around.of[i].first, around.of[i].second, moved);
-    if(!exact) { ++out.refused_by_exact_check; continue; }
-    for(std::size_t i = begin; i < end; ++i) u[around.of[i].first] = u_new[i - begin];
-    U += dU;
-    K += dK;
+    if(!(energy(moved) <= E + 1e-4 * lambda * slope)) continue;
+    if(!certified(moved)) { ++out.refused_by_exact_check; continue; }
     ++out.moved;
     return true;
   }

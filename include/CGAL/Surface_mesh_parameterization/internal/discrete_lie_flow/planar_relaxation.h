@@ -62,15 +62,37 @@ inline Relaxation_outcome relax_planar_vertices(const std::vector<Face>& faces, 
       if(rate < 0) lambda_crit = (std::min)(lambda_crit, -u[f] / rate);
     }
     const auto corner = [&](std::size_t f, int k, int j) -> const Vec2& { return uv[std::size_t(faces[f][(k + j) % 3])]; };
+    double dU = 0, dK = 0;
+    u_new.resize(end - begin);
+    const auto energy_at = [&](const Vec2& x) {
+      dU = dK = 0;
+      for(std::size_t i = begin; i < end; ++i) {
+        const std::size_t f = around.of[i].first;
+        const double un = signed_area_2(x, corner(f, around.of[i].second, 1), corner(f, around.of[i].second, 2));
+        if(!(un > 0)) return infinite_step();
+        u_new[i - begin] = un;
+        dU += un - u[f];
+        dK += energy.weight(f) * (1 / un - 1 / u[f]);
+      }
+      return 1 + (U + dU) * (K + dK);
+    };
+    const auto certified = [&](const Vec2& x) {
+      for(std::size_t i = begin; i < end; ++i) {
+        const std::size_t f = around.of[i].first;
+        if(exact_orientation_2(x, corner(f, around.of[i].second, 1), corner(f, around.of[i].second, 2)) != CGAL::POSITIVE)
+          return false;
+      }
+      return true;
+    };
     Vec2 moved;
-    if(relaxation_line_search(around, begin, end, energy, (std::min)(1., mu * lambda_crit), slope,
+    if(relaxation_line_search(1 + U * K, (std::min)(1., mu * lambda_crit), slope,
                               [&](double l) { return Vec2{{ uv[v][0] + l * d[0], uv[v][1] + l * d[1] }}; },
-                              [&](std::size_t f, int k, const Vec2& x) { return signed_area_2(x, corner(f, k, 1), corner(f, k, 2)); },
-                              [&](std::size_t f, int k, const Vec2& x) {
-                                return exact_orientation_2(x, corner(f, k, 1), corner(f, k, 2)) == CGAL::POSITIVE;
-                              },
-                              u, u_new, U, K, moved, out))
+                              energy_at, certified, moved, out)) {
+      for(std::size_t i = begin; i < end; ++i) u[around.of[i].first] = u_new[i - begin];
+      U += dU;
+      K += dK;
       uv[v] = moved;
+    }
   }
   return out;
 }

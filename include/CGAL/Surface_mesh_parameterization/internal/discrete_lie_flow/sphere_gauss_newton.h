@@ -60,62 +60,36 @@ struct Tangent_frames
   }
 };
 
-/// ∂u_t/∂p_k of barrier_area_sphere for the three corners of face `t`
-/// (see sphere_position_gradient for the formulas).
-inline std::array<Vec3, 3> barrier_area_gradients(const std::vector<Vec3>& p, const Face& t, double h0)
-{
-  const Vec3 N = cross(sub(p[std::size_t(t[1])], p[std::size_t(t[0])]), sub(p[std::size_t(t[2])], p[std::size_t(t[0])]));
-  const double l = std::sqrt(dot(N, N));
-  const Vec3 n = {{ N[0] / l, N[1] / l, N[2] / l }};
-  const double s = dot(p[std::size_t(t[0])], N) / (l * h0);
-  const double wl = s < 1 ? s * s : 1, wc = s < 1 ? (2 - 2 * s) / h0 : 0;
-  std::array<Vec3, 3> G;
-  for(int k = 0; k < 3; ++k) {
-    const Vec3 e = sub(p[std::size_t(t[(k + 2) % 3])], p[std::size_t(t[(k + 1) % 3])]);
-    const Vec3 dl = cross(n, e), c = cross(p[std::size_t(t[k])], e);
-    for(int j = 0; j < 3; ++j) G[std::size_t(k)][std::size_t(j)] = 0.5 * (wl * dl[j] + wc * (N[j] + c[j]));
-  }
-  return G;
-}
-
-/// The same gradient for corner `k` alone (the vertex-by-vertex relaxation
-/// needs one corner per face; same arithmetic, same values).
-inline Vec3 barrier_area_gradient(const std::vector<Vec3>& p, const Face& t, int k, double h0)
-{
-  const Vec3 N = cross(sub(p[std::size_t(t[1])], p[std::size_t(t[0])]), sub(p[std::size_t(t[2])], p[std::size_t(t[0])]));
-  const double l = std::sqrt(dot(N, N));
-  const Vec3 n = {{ N[0] / l, N[1] / l, N[2] / l }};
-  const double s = dot(p[std::size_t(t[0])], N) / (l * h0);
-  const double wl = s < 1 ? s * s : 1, wc = s < 1 ? (2 - 2 * s) / h0 : 0;
-  const Vec3 e = sub(p[std::size_t(t[(k + 2) % 3])], p[std::size_t(t[(k + 1) % 3])]);
-  const Vec3 dl = cross(n, e), c = cross(p[std::size_t(t[k])], e);
-  Vec3 G;
-  for(int j = 0; j < 3; ++j) G[std::size_t(j)] = 0.5 * (wl * dl[j] + wc * (N[j] + c[j]));
-  return G;
-}
-
 /// Calls `add(i, j, v)` for every contribution to H + ε S in the tangent
 /// frames (2 unknowns per vertex, x of vertex i at 2i, 2i + 1), always in
-/// the same order: H = Σ_t w_t g_t g_tᵀ with g_t the tangential gradient of
-/// u_t, S the Sobolev metric `K` (n × n, one copy per coordinate) seen
-/// through the frames. The diagonal of H weighs each face by e_t''(u_t).
-/// Returns tr(H) / tr(S) in `ratio`; ε = `eps_relative` × ratio.
+/// the same order: H = Σ_t (w_t g_t g_tᵀ + w'_t g'_t g'_tᵀ) with g_t, g'_t
+/// the tangential gradients of face t's flat and cone areas and w, w' the
+/// energy's curvatures in them (sphere_flow.h's polish energy), S the
+/// Sobolev metric `K` (n × n, one copy per coordinate) seen through the
+/// frames. Returns tr(H) / tr(S) in `ratio`; ε = `eps_relative` × ratio.
 template <class Add>
 void sphere_gauss_newton_contributions(const std::vector<Vec3>& p, const std::vector<Face>& faces,
-                                       const std::vector<double>& w, double h0, const Tangent_frames& T,
-                                       const Sparse_matrix& K, double eps_relative, double& ratio, Add&& add)
+                                       const std::vector<double>& w_flat, const std::vector<double>& w_cone,
+                                       const Tangent_frames& T, const Sparse_matrix& K, double eps_relative,
+                                       double& ratio, Add&& add)
 {
   double trace_H = 0;
-  std::array<std::array<double, 2>, 3> g;
+  std::array<std::array<double, 2>, 3> g, gc;
   for(std::size_t f = 0; f < faces.size(); ++f) {
     const Face& t = faces[f];
-    const std::array<Vec3, 3> G = barrier_area_gradients(p, t, h0);
-    for(int k = 0; k < 3; ++k) g[std::size_t(k)] = T.coordinates(std::size_t(t[k]), G[std::size_t(k)]);
+    for(int k = 0; k < 3; ++k) {
+      const std::size_t v = std::size_t(t[k]);
+      Vec3 flat, cone;
+      corner_area_gradients(p[v], p[std::size_t(t[(k + 1) % 3])], p[std::size_t(t[(k + 2) % 3])], flat, cone);
+      g[std::size_t(k)] = T.coordinates(v, flat);
+      gc[std::size_t(k)] = T.coordinates(v, cone);
+    }
     for(int k = 0; k < 3; ++k)
       for(int l = 0; l < 3; ++l)
         for(int a = 0; a < 2; ++a)
           for(int b = 0; b < 2; ++b) {
-            const double v = w[f] * g[std::size_t(k)][std::size_t(a)] * g[std::size_t(l)][std::size_t(b)];
+            const std::size_t i = std::size_t(k), j = std::size_t(l), x = std::size_t(a), y = std::size_t(b);
+            const double v = w_flat[f] * g[i][x] * g[j][y] + w_cone[f] * gc[i][x] * gc[j][y];
             add(2 * t[k] + a, 2 * t[l] + b, v);
             if(k == l && a == b) trace_H += v;
           }
@@ -142,13 +116,14 @@ void sphere_gauss_newton_contributions(const std::vector<Vec3>& p, const std::ve
 
 /// H + ε S (see sphere_gauss_newton_contributions) as a matrix.
 inline Sparse_matrix sphere_gauss_newton_matrix(const std::vector<Vec3>& p, const std::vector<Face>& faces,
-                                                const std::vector<double>& w, double h0, const Tangent_frames& T,
-                                                const Sparse_matrix& K, double eps_relative, double& ratio)
+                                                const std::vector<double>& w_flat, const std::vector<double>& w_cone,
+                                                const Tangent_frames& T, const Sparse_matrix& K, double eps_relative,
+                                                double& ratio)
 {
   const std::size_t n = p.size();
   std::vector<Eigen::Triplet<double> > trip;
   trip.reserve(faces.size() * 36 + std::size_t(K.nonZeros()) * 4);
-  sphere_gauss_newton_contributions(p, faces, w, h0, T, K, eps_relative, ratio,
+  sphere_gauss_newton_contributions(p, faces, w_flat, w_cone, T, K, eps_relative, ratio,
                                     [&trip](int i, int j, double v) { trip.emplace_back(i, j, v); });
   Sparse_matrix A(Eigen::Index(2 * n), Eigen::Index(2 * n));
   A.setFromTriplets(trip.begin(), trip.end());

@@ -170,31 +170,20 @@ inline double cone_area_sphere(const Vec3& a, const Vec3& b, const Vec3& c)
   return 0.5 * dot(a, cross(sub(b, a), sub(c, a)));
 }
 
-/// The flow's area element: the flat area a, damped once the distance h of
-/// the triangle's plane from the centre drops below `h0`:
-/// u = a φ(h / h0), φ(s) = s (2 − s) for s < 1, φ = 1 above (C¹ at s = 1).
-/// It is the flat area (the metric's) on every triangle of a fine mesh
-/// (h ≈ 1), and like the cone area it vanishes exactly where the orientation
-/// predicate does: a triangle whose plane nears the centre keeps a large flat
-/// area, so the plain flat area would not be a barrier there. (The cone area
-/// a h alone optimises the wrong quantity on coarse meshes: blob-closed.off
-/// and oblong.off plateaued at flat D_area 2.007 and 2.53.)
-inline double barrier_area_sphere(const Vec3& a, const Vec3& b, const Vec3& c, double h0)
+/// ∂/∂a of the two area elements of the face (a, b, c) at its corner a (any
+/// corner: rotate the face). With N = (b − a) × (c − a) and e = c − b: the
+/// flat area ½|N| has ½ n̂ × e, the cone area ½ det[a, b, c] has ½ b × c,
+/// evaluated as ½ (N + a × e), which keeps its relative accuracy on tiny faces.
+inline void corner_area_gradients(const Vec3& a, const Vec3& b, const Vec3& c, Vec3& flat, Vec3& cone)
 {
   const Vec3 N = cross(sub(b, a), sub(c, a));
-  const double C = dot(a, N); // det[a, b, c], = |N| h
-  if(!(C > 0)) return 0.5 * C;
   const double l = std::sqrt(dot(N, N));
-  const double s = C / (l * h0);
-  return s >= 1 ? 0.5 * l : 0.5 * l * s * (2 - s);
-}
-
-inline void barrier_areas_sphere(const std::vector<Vec3>& p, const std::vector<Face>& faces, double h0,
-                                 std::vector<double>& out)
-{
-  out.resize(faces.size());
-  for(std::size_t f = 0; f < faces.size(); ++f)
-    out[f] = barrier_area_sphere(p[std::size_t(faces[f][0])], p[std::size_t(faces[f][1])], p[std::size_t(faces[f][2])], h0);
+  const Vec3 e = sub(c, b);
+  const Vec3 de = cross(N, e), ae = cross(a, e);
+  for(std::size_t j = 0; j < 3; ++j) {
+    flat[j] = 0.5 * de[j] / l;
+    cone[j] = 0.5 * (N[j] + ae[j]);
+  }
 }
 
 inline void cone_areas_sphere(const std::vector<Vec3>& p, const std::vector<Face>& faces, std::vector<double>& out)

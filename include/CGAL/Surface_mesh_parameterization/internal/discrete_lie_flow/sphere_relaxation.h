@@ -32,35 +32,36 @@ namespace internal {
 namespace dlf {
 
 
-/// Vertices of the faces whose area ratio r_t = (u_t / Σu) / √c_t is off by
-/// more than e^`threshold`: where a sweep has work to do (a sweep over every
-/// vertex costs as much as a global step on a fine mesh).
-inline std::vector<std::size_t> vertices_to_relax(const std::vector<Face>& faces, const Area_barrier_energy& energy,
+/// Vertices of the faces whose flat area ratio r_t = (u_t / Σu) / a_t is off
+/// by more than e^`threshold`: where a sweep has work to do (a sweep over
+/// every vertex costs as much as a global step on a fine mesh).
+inline std::vector<std::size_t> vertices_to_relax(const std::vector<Face>& faces, const Weighted_area_energy& energy,
                                                   const std::vector<double>& u, std::size_t n, double threshold)
 {
   double U = 0;
   for(double x : u) U += x;
   std::vector<char> mark(n, 0);
   for(std::size_t t = 0; t < faces.size(); ++t)
-    if(std::abs(std::log((u[t] / U) / std::sqrt(energy.weight(t)))) > threshold)
+    if(std::abs(std::log((u[t] / U) / energy.share(t))) > threshold)
       for(int k = 0; k < 3; ++k) mark[std::size_t(faces[t][k])] = 1;
   std::vector<std::size_t> out;
   for(std::size_t v = 0; v < n; ++v) if(mark[v]) out.push_back(v);
   return out;
 }
 
-/// One sweep over the vertices `active` of the energy E = 1 + U Σ c_t/u_t on
-/// the damped flat areas u (barrier_area_sphere with `h0`). `u` must hold
-/// the areas of `p`; both are updated.
+/// One sweep over the vertices `active` of the polish energy
+/// E(u) + κ E(w) (sphere_flow.h): u the flat areas, w the cone areas, E the
+/// weighted D_area `energy`. `u` and `w` must hold the areas of `p`; all
+/// three are updated.
 inline Relaxation_outcome relax_sphere_vertices(const std::vector<Face>& faces, const Vertex_faces& around,
-                                                const Area_barrier_energy& energy, double h0, double mu,
+                                                const Weighted_area_energy& energy, double kappa, double mu,
                                                 const std::vector<std::size_t>& active,
-                                                std::vector<Vec3>& p, std::vector<double>& u)
+                                                std::vector<Vec3>& p, std::vector<double>& u, std::vector<double>& w)
 {
+  typedef Weighted_area_energy::Sums Sums;
   Relaxation_outcome out;
-  double U = 0, K = 0;
-  for(std::size_t t = 0; t < u.size(); ++t) { U += u[t]; K += energy.weight(t) / u[t]; }
-  std::vector<double> u_new;
+  Sums S = energy.sums(u), Sw = energy.sums(w);
+  std::vector<double> u_new, w_new;
   for(std::size_t v : active) {
     const std::size_t begin = around.first[v], end = around.first[v + 1];
     if(begin == end) continue;
@@ -68,12 +69,15 @@ inline Relaxation_outcome relax_sphere_vertices(const std::vector<Face>& faces, 
     const Vec3& q = p[v];
     Vec3 e1, e2;
     tangent_frame(q, e1, e2);
+    const auto corner = [&](std::size_t f, int k, int j) -> const Vec3& { return p[std::size_t(faces[f][(k + j) % 3])]; };
     Vertex_model model;
     for(std::size_t i = begin; i < end; ++i) {
       const std::size_t f = around.of[i].first;
-      const Vec3 G = barrier_area_gradient(p, faces[f], around.of[i].second, h0);
-      const double c = energy.weight(f);
-      model.add(K - U * c / (u[f] * u[f]), 2 * U * c / (u[f] * u[f] * u[f]), dot(e1, G), dot(e2, G));
+      const int k = around.of[i].second;
+      Vec3 flat, cone;
+      corner_area_gradients(q, corner(f, k, 1), corner(f, k, 2), flat, cone);
+      model.add(energy.derivative(S, f, u[f]), energy.curvature(S, f, u[f]), dot(e1, flat), dot(e2, flat));
+      model.add(kappa * energy.derivative(Sw, f, w[f]), kappa * energy.curvature(Sw, f, w[f]), dot(e1, cone), dot(e2, cone));
     }
     double x0, x1, slope;
     if(!model.step(x0, x1, slope)) continue;
@@ -81,25 +85,51 @@ inline Relaxation_outcome relax_sphere_vertices(const std::vector<Face>& faces, 
     // Exact critical root: det[q + λd, r, s] = det[q, r, s] + λ d·(r × s).
     double lambda_crit = infinite_step();
     for(std::size_t i = begin; i < end; ++i) {
-      const Face& t = faces[around.of[i].first];
-      const int k = around.of[i].second;
-      const Vec3& r = p[std::size_t(t[(k + 1) % 3])];
-      const Vec3& s = p[std::size_t(t[(k + 2) % 3])];
+      const Vec3& r = corner(around.of[i].first, around.of[i].second, 1);
+      const Vec3& s = corner(around.of[i].first, around.of[i].second, 2);
       const double d0 = dot(q, cross(sub(r, q), sub(s, q)));
       const double d1 = dot(d, cross(r, s));
       if(d1 < 0) lambda_crit = (std::min)(lambda_crit, -d0 / d1);
     }
-    const auto corner = [&](std::size_t f, int k, int j) -> const Vec3& { return p[std::size_t(faces[f][(k + j) % 3])]; };
+    // Corner order kept: (x, r, s) is a rotation of the face.
+    Sums S_new, Sw_new;
+    u_new.resize(end - begin);
+    w_new.resize(end - begin);
+    const auto energy_at = [&](const Vec3& x) {
+      S_new = S;
+      Sw_new = Sw;
+      for(std::size_t i = begin; i < end; ++i) {
+        const std::size_t f = around.of[i].first;
+        const Vec3 &r = corner(f, around.of[i].second, 1), &s = corner(f, around.of[i].second, 2);
+        const double a = signed_area_sphere(x, r, s), c = cone_area_sphere(x, r, s);
+        if(!(a > 0 && c > 0)) return infinite_step();
+        u_new[i - begin] = a;
+        w_new[i - begin] = c;
+        energy.change(S_new, f, u[f], a);
+        energy.change(Sw_new, f, w[f], c);
+      }
+      return energy.value(S_new) + kappa * energy.value(Sw_new);
+    };
+    const auto certified = [&](const Vec3& x) {
+      for(std::size_t i = begin; i < end; ++i) {
+        const std::size_t f = around.of[i].first;
+        if(exact_orientation_sphere(x, corner(f, around.of[i].second, 1), corner(f, around.of[i].second, 2)) != CGAL::POSITIVE)
+          return false;
+      }
+      return true;
+    };
     Vec3 moved;
-    // Corner order kept: (moved, r, s) is a rotation of the face.
-    if(relaxation_line_search(around, begin, end, energy, (std::min)(1., mu * lambda_crit), slope,
+    if(relaxation_line_search(energy.value(S) + kappa * energy.value(Sw), (std::min)(1., mu * lambda_crit), slope,
                               [&](double l) { return normalized(Vec3{{ q[0] + l * d[0], q[1] + l * d[1], q[2] + l * d[2] }}); },
-                              [&](std::size_t f, int k, const Vec3& x) { return barrier_area_sphere(x, corner(f, k, 1), corner(f, k, 2), h0); },
-                              [&](std::size_t f, int k, const Vec3& x) {
-                                return exact_orientation_sphere(x, corner(f, k, 1), corner(f, k, 2)) == CGAL::POSITIVE;
-                              },
-                              u, u_new, U, K, moved, out))
+                              energy_at, certified, moved, out)) {
+      for(std::size_t i = begin; i < end; ++i) {
+        u[around.of[i].first] = u_new[i - begin];
+        w[around.of[i].first] = w_new[i - begin];
+      }
+      S = S_new;
+      Sw = Sw_new;
       p[v] = moved;
+    }
   }
   return out;
 }
