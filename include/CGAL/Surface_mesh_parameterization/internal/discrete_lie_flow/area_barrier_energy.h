@@ -6,6 +6,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_AREA_BARRIER_ENERGY_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_AREA_BARRIER_ENERGY_H
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -72,11 +73,14 @@ private:
 
 /// D_area with other face weights, for the spherical polish (sphere_flow.h):
 /// E = Σ ω_t (r_t + 1/r_t) with r_t = (u_t/U)/a_t as above, a_t = A_t/Σ A,
-/// and ω_t = (1 − β) a_t + β/F. With α_t = ω_t/a_t and c_t = ω_t a_t,
-/// E = P/U + U K, P = Σ α_t u_t, K = Σ c_t/u_t (β = 0: P = U, the energy
-/// above). The minimum is still r ≡ 1; the weights decide where the residual
-/// sits when it cannot vanish: area weights leave it on the small faces,
-/// which the mean |log area ratio| counts like the others.
+/// and ω_t ∝ (1 − β) a_t + β min(1/F, 100 a_t), Σ ω = 1. With α_t = ω_t/a_t
+/// and c_t = ω_t a_t, E = P/U + U K, P = Σ α_t u_t, K = Σ c_t/u_t (β = 0:
+/// P = U, the energy above). The minimum is still r ≡ 1; the weights decide
+/// where the residual sits when it cannot vanish: area weights leave it on
+/// the small faces, which the mean |log area ratio| counts like the others.
+/// The cap keeps a face whose target is next to nothing (a 3D triangle
+/// collinear up to rounding) from dominating: with the plain uniform share
+/// its ω/a of ~1e15 made the flow crush its neighbours (D_area 11.5).
 class Weighted_area_energy
 {
 public:
@@ -92,11 +96,16 @@ public:
     double T = 0;
     for(double x : target) T += x;
     const double F = double(target.size());
+    std::vector<double> w(target.size());
+    double W = 0;
     for(std::size_t t = 0; t < target.size(); ++t) {
       m_a[t] = target[t] / T;
-      const double w = (1 - uniform_share) * m_a[t] + uniform_share / F;
-      m_alpha[t] = w / m_a[t];
-      m_c[t] = w * m_a[t];
+      w[t] = (1 - uniform_share) * m_a[t] + uniform_share * (std::min)(1 / F, 100 * m_a[t]);
+      W += w[t];
+    }
+    for(std::size_t t = 0; t < target.size(); ++t) {
+      m_alpha[t] = (w[t] / W) / m_a[t];
+      m_c[t] = (w[t] / W) * m_a[t];
     }
   }
 

@@ -289,20 +289,26 @@ Flow_outcome certified_sphere_flow(const Sphere_problem& P, std::vector<Vec3>& p
       polish_energy.curvatures(u, curvature);
       polish_energy.curvatures(w, curvature_cone);
       for(double& x : curvature_cone) x *= kappa;
-      double ratio = 1;
-      const Sparse_matrix& A = newton_matrix.assemble(2 * n, [&](auto&& add) {
-        sphere_gauss_newton_contributions(p, P.faces, curvature, curvature_cone, T, K, eps_relative, ratio, add);
-      });
-      const Clock::time_point assembled = Clock::now();
-      out.seconds_assembly += std::chrono::duration<double>(assembled - toc).count();
-      toc = assembled;
       Eigen::VectorXd b(Eigen::Index(2 * n)), x;
       for(std::size_t v = 0; v < n; ++v) {
         const std::array<double, 2> c = T.coordinates(v, g[v]);
         b[Eigen::Index(2 * v)] = -c[0];
         b[Eigen::Index(2 * v + 1)] = -c[1];
       }
-      bool solved = newton_solver.factorize(A) && newton_solver.solve(b, x);
+      // A factorisation that fails (H is only semidefinite: rotations change
+      // no area) is retried with a larger ε, as in the plane.
+      bool solved = false;
+      for(int attempt = 0; attempt < 6 && !solved; ++attempt) {
+        double ratio = 1;
+        const Sparse_matrix& A = newton_matrix.assemble(2 * n, [&](auto&& add) {
+          sphere_gauss_newton_contributions(p, P.faces, curvature, curvature_cone, T, K, eps_relative, ratio, add);
+        });
+        const Clock::time_point assembled = Clock::now();
+        out.seconds_assembly += std::chrono::duration<double>(assembled - toc).count();
+        toc = assembled;
+        solved = newton_solver.factorize(A) && newton_solver.solve(b, x);
+        if(!solved) eps_relative *= 10;
+      }
       if(solved) for(std::size_t v = 0; v < n; ++v) d[v] = T.vector(v, x[Eigen::Index(2 * v)], x[Eigen::Index(2 * v + 1)]);
       else { out.solver_failed = true; for(std::size_t v = 0; v < n; ++v) d[v] = {{ -g[v][0], -g[v][1], -g[v][2] }}; }
     } else {
