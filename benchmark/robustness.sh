@@ -31,7 +31,7 @@ begin='<!-- BEGIN GENERATED (benchmark/robustness.sh) -->'
 end='<!-- END GENERATED -->'
 if [[ -f "$DOC" ]] && grep -qF "$begin" "$DOC"; then
   { awk -v b="$begin" '{ print } $0 == b { exit }' "$DOC"
-    echo "_Generated $(date -u +%Y-%m-%d) by \`bash benchmark/robustness.sh\`; corpus files in \`$SCRATCH/corpus\`._"
+    echo "_Generated $(date -u +%Y-%m-%d) by \`bash benchmark/robustness.sh\`; corpus files in \`corpus/\` under the scratch directory (\`SCRATCH\`)._"
     echo
     cat "$SCRATCH/table.md"
     awk -v e="$end" '$0 == e { on = 1 } on { print }' "$DOC"

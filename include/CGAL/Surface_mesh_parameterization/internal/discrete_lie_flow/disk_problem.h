@@ -11,6 +11,8 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/area_barrier_energy.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/distortion.h>
 
+#include <CGAL/enum.h>
+
 #include <utility>
 #include <vector>
 
@@ -138,6 +140,22 @@ bool relaxation_line_search(double E, double lambda, double slope, const Positio
     return true;
   }
   return false;
+}
+
+/// Whether `orientation(x, r, s)` is positive for every face (x, r, s) of the
+/// vertex at `around.of[begin, end)` moved to x (r, s: its other corners in
+/// `p`, in the face's order): the exact check of a relaxation move.
+template <class Point, class Orientation>
+bool moved_vertex_is_positive(const Vertex_faces& around, std::size_t begin, std::size_t end,
+                              const std::vector<Face>& faces, const std::vector<Point>& p, const Point& x,
+                              const Orientation& orientation)
+{
+  for(std::size_t i = begin; i < end; ++i) {
+    const Face& t = faces[around.of[i].first];
+    const int k = around.of[i].second;
+    if(orientation(x, p[std::size_t(t[(k + 1) % 3])], p[std::size_t(t[(k + 2) % 3])]) != CGAL::POSITIVE) return false;
+  }
+  return true;
 }
 
 /// Lumped vertex areas: out[i] = (1/3) Σ_{f ∋ i} value[f].

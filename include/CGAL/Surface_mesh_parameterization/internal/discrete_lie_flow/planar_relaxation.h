@@ -77,12 +77,7 @@ inline Relaxation_outcome relax_planar_vertices(const std::vector<Face>& faces, 
       return 1 + (U + dU) * (K + dK);
     };
     const auto certified = [&](const Vec2& x) {
-      for(std::size_t i = begin; i < end; ++i) {
-        const std::size_t f = around.of[i].first;
-        if(exact_orientation_2(x, corner(f, around.of[i].second, 1), corner(f, around.of[i].second, 2)) != CGAL::POSITIVE)
-          return false;
-      }
-      return true;
+      return moved_vertex_is_positive(around, begin, end, faces, uv, x, &exact_orientation_2);
     };
     Vec2 moved;
     if(relaxation_line_search(1 + U * K, (std::min)(1., mu * lambda_crit), slope,

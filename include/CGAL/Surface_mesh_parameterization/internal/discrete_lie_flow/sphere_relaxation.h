@@ -111,12 +111,7 @@ inline Relaxation_outcome relax_sphere_vertices(const std::vector<Face>& faces, 
       return energy.value(S_new) + kappa * energy.value(Sw_new);
     };
     const auto certified = [&](const Vec3& x) {
-      for(std::size_t i = begin; i < end; ++i) {
-        const std::size_t f = around.of[i].first;
-        if(exact_orientation_sphere(x, corner(f, around.of[i].second, 1), corner(f, around.of[i].second, 2)) != CGAL::POSITIVE)
-          return false;
-      }
-      return true;
+      return moved_vertex_is_positive(around, begin, end, faces, p, x, &exact_orientation_sphere);
     };
     Vec3 moved;
     if(relaxation_line_search(energy.value(S) + kappa * energy.value(Sw), (std::min)(1., mu * lambda_crit), slope,
