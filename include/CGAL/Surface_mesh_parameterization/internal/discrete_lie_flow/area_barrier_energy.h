@@ -156,7 +156,6 @@ public:
   }
   /// a_t, face t's share of the target area.
   double share(std::size_t t) const { return m_a[t]; }
-  std::size_t size() const { return m_a.size(); }
 
 private:
   std::vector<double> m_a, m_alpha, m_c;
