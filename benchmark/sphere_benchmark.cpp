@@ -6,8 +6,8 @@
 // genus-0 triangle meshes of CGAL's data set, plus a "large" section of
 // Loop-subdivided copies (bear.off+loop1, 110K faces, is the row of the
 // speed goal: a 100K-face closed mesh in under 10 s), and a "refined" section:
-// the meshes that fall short of the goals, after one Loop subdivision (the
-// same surfaces with four times the faces), not counted towards the goals.
+// the meshes that fall short of the goals with each triangle split into four
+// at its edges' midpoints (the same surfaces), not counted towards the goals.
 //
 // One row per mesh: seconds (initial map, flow, whole call), iterations, stop
 // reason, D_area at the start and the end, mean and max |log area ratio|,
@@ -36,6 +36,7 @@
 #include <time.h>
 
 #include <algorithm>
+#include <map>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -141,16 +142,46 @@ static std::string not_a_sphere(SM& mesh) // non-const: a temporary face propert
   return "";
 }
 
-/// Reads `spec` ("name.off", or "name.off+loopK" for K steps of Loop
-/// subdivision) from `dir`; on false, `why` says what disqualifies it.
+/// Splits every triangle into four at its edges' midpoints: the same surface,
+/// with triangles similar to the input's (Loop subdivision also smooths).
+static void midpoint_subdivision(SM& mesh)
+{
+  SM out;
+  std::map<SM::Vertex_index, SM::Vertex_index> old;
+  std::map<std::pair<SM::Vertex_index, SM::Vertex_index>, SM::Vertex_index> middle;
+  for(SM::Vertex_index v : vertices(mesh)) old[v] = out.add_vertex(mesh.point(v));
+  const auto mid = [&](SM::Vertex_index a, SM::Vertex_index b) {
+    const auto key = std::minmax(a, b);
+    const auto it = middle.find(key);
+    if(it != middle.end()) return it->second;
+    return middle[key] = out.add_vertex(CGAL::midpoint(mesh.point(a), mesh.point(b)));
+  };
+  for(SM::Face_index f : faces(mesh)) {
+    const SM::Halfedge_index h = halfedge(f, mesh);
+    const SM::Vertex_index a = source(h, mesh), b = target(h, mesh), c = target(next(h, mesh), mesh);
+    const SM::Vertex_index ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
+    out.add_face(old[a], ab, ca);
+    out.add_face(ab, old[b], bc);
+    out.add_face(ca, bc, old[c]);
+    out.add_face(ab, bc, ca);
+  }
+  mesh = std::move(out);
+}
+
+/// Reads `spec` ("name.off", or "name.off+loopK" / "name.off+midK" for K
+/// steps of Loop / midpoint subdivision) from `dir`; on false, `why` says what
+/// disqualifies it.
 static bool load_mesh(const std::string& spec, const fs::path& dir, SM& mesh, std::string& why)
 {
   std::string file = spec;
-  int loops = 0;
-  const std::size_t plus = spec.find("+loop");
+  int loops = 0, midpoints = 0;
+  const std::size_t plus = spec.find('+');
   if(plus != std::string::npos) {
     file = spec.substr(0, plus);
-    loops = std::atoi(spec.c_str() + plus + 5);
+    const std::string how = spec.substr(plus + 1);
+    if(how.rfind("loop", 0) == 0) loops = std::atoi(how.c_str() + 4);
+    else if(how.rfind("mid", 0) == 0) midpoints = std::atoi(how.c_str() + 3);
+    else { why = "unknown subdivision '" + how + "'"; return false; }
   }
   try {
     // The file's own connectivity first, as `dlf` reads it; then the reader
@@ -165,10 +196,9 @@ static bool load_mesh(const std::string& spec, const fs::path& dir, SM& mesh, st
     }
     why = not_a_sphere(mesh);
     if(!why.empty()) return false;
-    if(loops > 0) {
-      CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(loops));
-      why = not_a_sphere(mesh);
-    }
+    if(loops > 0) CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(loops));
+    for(int k = 0; k < midpoints; ++k) midpoint_subdivision(mesh);
+    if(loops > 0 || midpoints > 0) why = not_a_sphere(mesh);
   } catch(const std::exception& e) {
     why = "cannot read " + file + ": " + e.what();
   }
@@ -320,7 +350,7 @@ int main(int argc, char** argv)
   std::string data_dir, meshes_arg, large_arg, refined_arg, speed_mesh, json_out, md_out;
   po::options_description desc(
     "sphere_benchmark: the spherical Discrete Lie Flow (default options) on closed genus-0 meshes, in one run.\n"
-    "Mesh names: files in <data-dir>/meshes; NAME+loopK means K steps of Loop subdivision.\nOptions");
+    "Mesh names: files in <data-dir>/meshes; NAME+loopK / NAME+midK means K steps of Loop / midpoint subdivision.\nOptions");
   desc.add_options()
     ("help,h", "this help")
     ("data-dir", po::value<std::string>(&data_dir)->default_value(DLF_DATA_DIR), "CGAL's data set (meshes in <dir>/meshes)")
@@ -331,7 +361,7 @@ int main(int argc, char** argv)
      "comma-separated meshes of the large section")
     ("no-large", "skip the large section")
     ("refined", po::value<std::string>(&refined_arg)->default_value(
-       "cactus.off+loop1,part.off+loop1,oblong.off+loop1,oblong-shuffled.off+loop1,dino.off+loop1,bull.off+loop1"),
+       "part.off+mid1,part.off+mid2,oblong.off+mid1,oblong-shuffled.off+mid1,cactus.off+mid1,dino.off+mid1,bull.off+mid1"),
      "comma-separated meshes of the refined section (not counted towards the goals; empty: none)")
     ("list", "print the meshes that would be run, and exit")
     ("speed-mesh", po::value<std::string>(&speed_mesh)->default_value("bear.off+loop1"),
@@ -491,9 +521,9 @@ int main(int argc, char** argv)
   if(!refined.empty()) {
     std::size_t refined_met = 0;
     for(const json& m : refined) if(m["meets_goals"]) ++refined_met;
-    md << "### Short meshes after one Loop subdivision (not counted above)\n\n"
-       << "The same surfaces with four times the faces (Loop moves the vertices slightly): how much of the shortfall "
-          "above is the coarse connectivity. " << refined_met << " of " << refined.size() << " rows meet every goal.\n\n";
+    md << "### Short meshes, refined (not counted above)\n\n"
+       << "NAME+midK: every triangle split into four at its edges' midpoints, K times (the same surface, with "
+          "triangles similar to the input's): how much of the shortfall above is the coarse connectivity. " << refined_met << " of " << refined.size() << " rows meet every goal.\n\n";
     table(md, refined);
   }
   std::ofstream out(md_out);
