@@ -538,7 +538,7 @@ int main(int argc, char** argv)
   doc["settings"] = { { "slow_face_limit", slow_limit }, { "repeats", repeats }, { "repeat_below", repeat_below },
                       { "table2_cap", table2_cap }, { "table2_tolerance", table2_tolerance }, { "timing", "wall time of parameterize(), median of repeats below repeat_below faces" },
 #ifdef DLF_USE_CHOLMOD
-                      { "dlf_solver", "Eigen SimplicialLDLT below " + std::to_string(CGAL::Surface_mesh_parameterization::internal::dlf::Size_switched_spd_solver::large_rows) + " unknowns, CHOLMOD supernodal LLT from there" },
+                      { "dlf_solver", "CHOLMOD supernodal LLT" },
 #else
                       { "dlf_solver", "Eigen SimplicialLDLT" },
 #endif

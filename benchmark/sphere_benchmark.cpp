@@ -409,7 +409,7 @@ int main(int argc, char** argv)
                                    { "log_area_mean_abs_max", goal_log_area_mean }, { "stop_reason", "converged" },
                                    { "speed_mesh", speed_mesh }, { "speed_seconds_max", goal_speed_seconds } } },
 #ifdef DLF_USE_CHOLMOD
-                      { "solver", "Eigen SimplicialLDLT below " + std::to_string(CGAL::Surface_mesh_parameterization::internal::dlf::Size_switched_spd_solver::large_rows) + " unknowns, CHOLMOD supernodal LLT from there" },
+                      { "solver", "CHOLMOD supernodal LLT" },
 #else
                       { "solver", "Eigen SimplicialLDLT" },
 #endif

@@ -7,7 +7,6 @@
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certified_flow.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/paper_flow.h>
 
 #include <CGAL/Surface_mesh_parameterization/Symmetric_barycentric_mapping_parameterizer_3.h>
@@ -20,6 +19,10 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
+#include <Eigen/SparseCholesky>
+#ifdef DLF_USE_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
 
 #include <algorithm>
 #include <array>
@@ -35,6 +38,16 @@
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
+
+namespace internal {
+namespace dlf {
+#ifdef DLF_USE_CHOLMOD
+typedef Eigen::CholmodSupernodalLLT<Sparse_matrix, Eigen::Lower> Default_spd_solver;
+#else
+typedef Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Lower> Default_spd_solver;
+#endif
+} // namespace dlf
+} // namespace internal
 
 /// \ingroup PkgSurfaceMeshParameterizationMethods
 ///
@@ -58,8 +71,7 @@ namespace Surface_mesh_parameterization {
 ///   Default: Tutte on the circle by arc length (`Symmetric_barycentric_mapping_parameterizer_3`).
 /// \tparam SolverTraits_ `CGAL::Eigen_solver_traits<S>` with `S` an Eigen
 ///   sparse SPD solver offering `analyzePattern()`/`factorize()`. Default:
-///   `Eigen::SimplicialLDLT`, and CHOLMOD's supernodal LLT for systems of
-///   50,000 unknowns and more when CHOLMOD is available.
+///   CHOLMOD's supernodal LLT when available, else `Eigen::SimplicialLDLT`.
 template <class TriangleMesh_, class InitialParameterizer_ = Default, class SolverTraits_ = Default>
 class Discrete_lie_flow_parameterizer_3
 {

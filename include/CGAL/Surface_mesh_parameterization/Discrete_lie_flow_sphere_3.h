@@ -5,8 +5,7 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_SPHERE_3_H
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
-#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_parameterizer_3.h> // Default_spd_solver
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_initial_map.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_problem.h>
@@ -101,8 +100,7 @@ struct Discrete_lie_flow_sphere_report
 /// \tparam TriangleMesh_ a model of `FaceGraph` (closed, connected, genus 0, triangles)
 /// \tparam SolverTraits_ `CGAL::Eigen_solver_traits<S>` with `S` an Eigen
 ///   sparse SPD solver offering `analyzePattern()`/`factorize()`. Default:
-///   `Eigen::SimplicialLDLT`, and CHOLMOD's supernodal LLT for systems of
-///   50,000 unknowns and more when CHOLMOD is available.
+///   CHOLMOD's supernodal LLT when available, else `Eigen::SimplicialLDLT`.
 template <class TriangleMesh_, class SolverTraits_ = Default>
 class Discrete_lie_flow_sphere_parameterizer_3
 {

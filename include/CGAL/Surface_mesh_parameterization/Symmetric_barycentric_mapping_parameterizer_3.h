@@ -7,13 +7,16 @@
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/internal/kernel_traits.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/Eigen_solver_traits.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
+#include <Eigen/SparseCholesky>
+#ifdef DLF_USE_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
 
 #include <map>
 #include <set>
@@ -36,8 +39,7 @@ namespace Surface_mesh_parameterization {
 ///
 /// \tparam BorderParameterizer_ a fixed convex border (default: the circle by arc length)
 /// \tparam SolverTraits_ `CGAL::Eigen_solver_traits<S>` with `S` an Eigen SPD
-///   solver (default: `SimplicialLDLT`, CHOLMOD's supernodal LLT from 50,000
-///   unknowns when available)
+///   solver (default: CHOLMOD's supernodal LLT when available, else `SimplicialLDLT`)
 template <class TriangleMesh_, class BorderParameterizer_ = Default, class SolverTraits_ = Default>
 class Symmetric_barycentric_mapping_parameterizer_3
 {
@@ -46,7 +48,11 @@ public:
   typedef typename Default::Get<BorderParameterizer_, Circular_border_arc_length_parameterizer_3<TriangleMesh_> >::type
     Border_parameterizer;
   typedef Eigen::SparseMatrix<double> Matrix;
-  typedef internal::dlf::Default_spd_solver Default_solver;
+#ifdef DLF_USE_CHOLMOD
+  typedef Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower> Default_solver;
+#else
+  typedef Eigen::SimplicialLDLT<Matrix, Eigen::Lower> Default_solver;
+#endif
   typedef typename Default::Get<SolverTraits_, Eigen_solver_traits<Default_solver> >::type Solver_traits;
 
   typedef typename boost::graph_traits<Triangle_mesh>::vertex_descriptor vertex_descriptor;

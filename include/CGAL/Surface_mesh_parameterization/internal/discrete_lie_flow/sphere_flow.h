@@ -70,7 +70,7 @@ struct Sphere_flow_settings
   /// along a great circle, flat area 5–20× their target, that it showed near
   /// their target. They form in the opening, and held 75–84% of
   /// D_area − 2 at the plateaus of dino, bull and cactus (2.02–2.08; no face
-  /// of cactus comes within 0.09 of the centre now). Measured with `uniform_weight` 0.5
+  /// comes within 0.1 of the centre now). Measured with `uniform_weight` 0.5
   /// on the 34 closed meshes of the data set and bear Loop×1: 0.03 meets
   /// every goal on 29 rows, 0.1 on 28 (spool.off stops at a mean of 0.0201);
   /// 0.3 did worse than 0.1 on 8 of the 14 meshes tried (dragknob, spool
