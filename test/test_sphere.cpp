@@ -760,7 +760,8 @@ TEST(Sphere_map, CoarseMeshesMeetTheGoalsOnceRefined)
 {
   // cactus and part stop at a mean |log r| of 0.054 and 0.038 on their own
   // triangles (doc/sphere.md, "Coarse connectivity"); after one Loop
-  // subdivision the same surfaces converge with every goal met.
+  // subdivision (four times the faces, slightly smoothed) they converge
+  // with every goal met.
   for(const char* name : { "cactus", "part" }) {
     SM sm = read_sphere_mesh(name);
     CGAL::Subdivision_method_3::Loop_subdivision(sm, CGAL::parameters::number_of_iterations(1));
