@@ -25,8 +25,11 @@ headers=$(cd "$root" && find include -type f -name '*.h' | sort | xargs cat | sh
 built=$(date -u '+%Y-%m-%d %H:%M UTC')
 cmake --build "$build" --target dlf_benchmark -j2
 
-# Single-threaded, as the CGAL baseline was measured: CHOLMOD would otherwise
-# run OpenMP/OpenBLAS threads whose spinning skews a shared 2-core machine.
+# Single-threaded, as the CGAL baseline was measured. OMP_THREAD_LIMIT is the
+# one that binds CHOLMOD: its OpenMP regions ask for 4 threads whatever
+# OMP_NUM_THREADS says, and with OMP_NUM_THREADS=1 alone their spinning made
+# DLF 1.5-2x slower on this 2-core machine (doc/certified_mode.md, "Solver").
+export OMP_THREAD_LIMIT=${OMP_THREAD_LIMIT:-1}
 export OMP_NUM_THREADS=${OMP_NUM_THREADS:-1}
 export OPENBLAS_NUM_THREADS=${OPENBLAS_NUM_THREADS:-1}
 

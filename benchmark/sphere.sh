@@ -25,8 +25,9 @@ headers=$(cd "$root" && find include -type f -name '*.h' | sort | xargs cat | sh
 built=$(date -u '+%Y-%m-%d %H:%M UTC')
 cmake --build "$build" --target sphere_benchmark -j2
 
-# Single-threaded: CHOLMOD would otherwise run OpenMP/OpenBLAS threads whose
-# spinning skews the timings on a shared machine.
+# Single-threaded. OMP_THREAD_LIMIT is the one that binds CHOLMOD (its OpenMP
+# regions ask for 4 threads whatever OMP_NUM_THREADS says; see benchmark/run.sh).
+export OMP_THREAD_LIMIT=1
 export OMP_NUM_THREADS=1
 export OPENBLAS_NUM_THREADS=1
 

@@ -23,8 +23,8 @@ if [ ${#names[@]} -eq 0 ]; then
   done
 fi
 
-# Single-threaded: CHOLMOD's OpenMP/OpenBLAS threads would skew the timings on a shared machine.
-export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1
+# Single-threaded (OMP_THREAD_LIMIT binds CHOLMOD's OpenMP regions; see benchmark/run.sh).
+export OMP_THREAD_LIMIT=1 OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 echo "| mesh | faces | stop | iterations | D_area flowing: start → best | D_area input faces | mean \\|log r\\| input faces | caller folds | flips | non-Delaunay edges | seconds |"
