@@ -42,6 +42,8 @@
 #include <boost/program_options.hpp>
 #include <nlohmann/json.hpp>
 
+#include "benchmark_utilities.h"
+
 #include <time.h>
 #include <unistd.h>
 
@@ -70,6 +72,7 @@ namespace D = CGAL::Surface_mesh_parameterization::internal::dlf;
 namespace fs = std::filesystem;
 namespace po = boost::program_options;
 using json = nlohmann::ordered_json;
+using namespace dlf_benchmark;
 
 typedef CGAL::Simple_cartesian<double> K;
 typedef CGAL::Surface_mesh<K::Point_3> SM;
@@ -89,23 +92,6 @@ typedef SMP::Discrete_lie_flow_parameterizer_3<SM, Tutte_square> Dlf_square;
 // Small utilities
 // ---------------------------------------------------------------------------
 
-typedef std::chrono::steady_clock Clock;
-static double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-/// CPU time of the process (all threads): less sensitive than wall time to
-/// the other jobs of a shared machine.
-static double cpu_now()
-{
-  timespec ts;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
-static double median(std::vector<double> v)
-{
-  if(v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
 /// Swallows what CGAL 5.5.1's Iterative_authalic_parameterizer_3 prints (DEBUG_L0 is hard-coded to 1).
 struct Null_buffer : std::streambuf
 {
@@ -119,40 +105,6 @@ struct Silence_cout
   Silence_cout() : old(std::cout.rdbuf(&sink)) {}
   ~Silence_cout() { std::cout.rdbuf(old); }
 };
-
-static std::string fmt(double x, int prec = 3)
-{
-  if(!std::isfinite(x)) return "nan";
-  std::ostringstream s;
-  const double a = std::abs(x);
-  if(a != 0 && (a < 1e-3 || a >= 1e6)) s << std::setprecision(prec) << x;
-  else s << std::fixed << std::setprecision(prec) << x;
-  return s.str();
-}
-static std::string fmt_time(double t)
-{
-  std::ostringstream s;
-  s << std::setprecision(3) << t;
-  return s.str();
-}
-static std::string loadavg()
-{
-  std::ifstream in("/proc/loadavg");
-  std::string a, b, c;
-  in >> a >> b >> c;
-  return a + " " + b + " " + c;
-}
-static std::vector<std::string> split(const std::string& s, char sep = ',')
-{
-  std::vector<std::string> out;
-  std::string cur;
-  for(char c : s) {
-    if(c == sep) { if(!cur.empty()) out.push_back(cur); cur.clear(); }
-    else if(c != ' ') cur += c;
-  }
-  if(!cur.empty()) out.push_back(cur);
-  return out;
-}
 
 // ---------------------------------------------------------------------------
 // Methods
@@ -193,19 +145,14 @@ struct Mesh_case
 static bool load_case(const std::string& spec, const fs::path& dir, Mesh_case& c, std::string& error)
 {
   c.name = spec;
-  std::string file = spec;
-  int loops = 0;
-  const std::size_t plus = spec.find("+loop");
-  if(plus != std::string::npos) {
-    file = spec.substr(0, plus);
-    loops = std::atoi(spec.c_str() + plus + 5);
-  }
-  const fs::path path = dir / file;
+  Mesh_spec parsed;
+  if(!parse_mesh_spec(spec, parsed, error)) return false;
+  const fs::path path = dir / parsed.file;
   if(!CGAL::IO::read_polygon_mesh(path.string(), c.mesh) || faces(c.mesh).empty()) {
     error = "cannot read " + path.string();
     return false;
   }
-  if(loops > 0) CGAL::Subdivision_method_3::Loop_subdivision(c.mesh, CGAL::parameters::number_of_iterations(loops));
+  subdivide(c.mesh, parsed);
   c.bhd = CGAL::Polygon_mesh_processing::longest_border(c.mesh).first;
   if(c.bhd == boost::graph_traits<SM>::null_halfedge()) { error = spec + " has no border"; return false; }
   SM::Property_map<SM::Vertex_index, int> vimap = c.mesh.add_property_map<SM::Vertex_index, int>("v:bench_index", -1).first;
@@ -486,7 +433,7 @@ int main(int argc, char** argv)
   int repeats = 3;
   po::options_description desc(
     "dlf_benchmark: DLF (certified and paper mode, circle and square) against CGAL's parameterizers, in one run.\n"
-    "Mesh names: files in <data-dir>/meshes; NAME+loopK means K steps of Loop subdivision.\nOptions");
+    "Mesh names: files in <data-dir>/meshes; NAME+loopK / NAME+midK means K steps of Loop / midpoint subdivision.\nOptions");
   desc.add_options()
     ("help,h", "this help")
     ("data-dir", po::value<std::string>(&data_dir)->default_value(DLF_DATA_DIR), "CGAL's data set (meshes in <dir>/meshes)")

@@ -33,6 +33,8 @@
 #include <boost/program_options.hpp>
 #include <nlohmann/json.hpp>
 
+#include "benchmark_utilities.h"
+
 #include <time.h>
 
 #include <algorithm>
@@ -60,6 +62,7 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 namespace fs = std::filesystem;
 namespace po = boost::program_options;
 using json = nlohmann::ordered_json;
+using namespace dlf_benchmark;
 
 typedef CGAL::Simple_cartesian<double> K;
 typedef CGAL::Surface_mesh<K::Point_3> SM;
@@ -73,54 +76,6 @@ static const double goal_d_area = 2.01;        // final D_area (optimum 2)
 static const double goal_log_area_mean = 0.02; // final mean |log(area ratio)|
 static const double goal_speed_seconds = 10;   // whole call on the 100K-face speed mesh
 static const std::size_t min_faces = 200;      // smaller meshes time nothing but overhead
-
-// ---------------------------------------------------------------------------
-// Small utilities
-// ---------------------------------------------------------------------------
-
-typedef std::chrono::steady_clock Clock;
-static double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-/// CPU time of the process (all threads): less sensitive than wall time to
-/// the other jobs of a shared machine.
-static double cpu_now()
-{
-  timespec ts;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
-static std::string fmt(double x, int prec = 3)
-{
-  if(!std::isfinite(x)) return "nan";
-  std::ostringstream s;
-  const double a = std::abs(x);
-  if(a != 0 && (a < 1e-3 || a >= 1e6)) s << std::setprecision(prec) << x;
-  else s << std::fixed << std::setprecision(prec) << x;
-  return s.str();
-}
-static std::string fmt_time(double t)
-{
-  std::ostringstream s;
-  s << std::setprecision(3) << t;
-  return s.str();
-}
-static std::string loadavg()
-{
-  std::ifstream in("/proc/loadavg");
-  std::string a, b, c;
-  in >> a >> b >> c;
-  return a + " " + b + " " + c;
-}
-static std::vector<std::string> split(const std::string& s, char sep = ',')
-{
-  std::vector<std::string> out;
-  std::string cur;
-  for(char c : s) {
-    if(c == sep) { if(!cur.empty()) out.push_back(cur); cur.clear(); }
-    else if(c != ' ') cur += c;
-  }
-  if(!cur.empty()) out.push_back(cur);
-  return out;
-}
 
 // ---------------------------------------------------------------------------
 // Meshes
@@ -142,47 +97,14 @@ static std::string not_a_sphere(SM& mesh) // non-const: a temporary face propert
   return "";
 }
 
-/// Splits every triangle into four at its edges' midpoints: the same surface,
-/// with triangles similar to the input's (Loop subdivision also smooths).
-static void midpoint_subdivision(SM& mesh)
-{
-  SM out;
-  std::map<SM::Vertex_index, SM::Vertex_index> old;
-  std::map<std::pair<SM::Vertex_index, SM::Vertex_index>, SM::Vertex_index> middle;
-  for(SM::Vertex_index v : vertices(mesh)) old[v] = out.add_vertex(mesh.point(v));
-  const auto mid = [&](SM::Vertex_index a, SM::Vertex_index b) {
-    const auto key = std::minmax(a, b);
-    const auto it = middle.find(key);
-    if(it != middle.end()) return it->second;
-    return middle[key] = out.add_vertex(CGAL::midpoint(mesh.point(a), mesh.point(b)));
-  };
-  for(SM::Face_index f : faces(mesh)) {
-    const SM::Halfedge_index h = halfedge(f, mesh);
-    const SM::Vertex_index a = source(h, mesh), b = target(h, mesh), c = target(next(h, mesh), mesh);
-    const SM::Vertex_index ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
-    out.add_face(old[a], ab, ca);
-    out.add_face(ab, old[b], bc);
-    out.add_face(ca, bc, old[c]);
-    out.add_face(ab, bc, ca);
-  }
-  mesh = std::move(out);
-}
-
 /// Reads `spec` ("name.off", or "name.off+loopK" / "name.off+midK" for K
 /// steps of Loop / midpoint subdivision) from `dir`; on false, `why` says what
 /// disqualifies it.
 static bool load_mesh(const std::string& spec, const fs::path& dir, SM& mesh, std::string& why)
 {
-  std::string file = spec;
-  int loops = 0, midpoints = 0;
-  const std::size_t plus = spec.find('+');
-  if(plus != std::string::npos) {
-    file = spec.substr(0, plus);
-    const std::string how = spec.substr(plus + 1);
-    if(how.rfind("loop", 0) == 0) loops = std::atoi(how.c_str() + 4);
-    else if(how.rfind("mid", 0) == 0) midpoints = std::atoi(how.c_str() + 3);
-    else { why = "unknown subdivision '" + how + "'"; return false; }
-  }
+  Mesh_spec parsed;
+  if(!parse_mesh_spec(spec, parsed, why)) return false;
+  const std::string& file = parsed.file;
   try {
     // The file's own connectivity first, as `dlf` reads it; then the reader
     // of the tests, which repairs polygon soups (duplicate points,
@@ -196,9 +118,8 @@ static bool load_mesh(const std::string& spec, const fs::path& dir, SM& mesh, st
     }
     why = not_a_sphere(mesh);
     if(!why.empty()) return false;
-    if(loops > 0) CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(loops));
-    for(int k = 0; k < midpoints; ++k) midpoint_subdivision(mesh);
-    if(loops > 0 || midpoints > 0) why = not_a_sphere(mesh);
+    subdivide(mesh, parsed);
+    if(parsed.loops > 0 || parsed.midpoints > 0) why = not_a_sphere(mesh);
   } catch(const std::exception& e) {
     why = "cannot read " + file + ": " + e.what();
   }

@@ -1,0 +1,148 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What the benchmark programs share: clocks, number formatting, option lists,
+// and the mesh specs "name.off+loopK" / "name.off+midK" (K steps of Loop or
+// midpoint subdivision of a mesh of CGAL's data set).
+
+#ifndef DLF_BENCHMARK_UTILITIES_H
+#define DLF_BENCHMARK_UTILITIES_H
+
+#include <CGAL/subdivision_method_3.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <time.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace dlf_benchmark {
+
+typedef std::chrono::steady_clock Clock;
+
+inline double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+/// CPU time of the process (all threads): less sensitive than wall time to
+/// the other jobs of a shared machine, but it counts idle-spinning threads.
+inline double cpu_now()
+{
+  timespec ts;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+inline double median(std::vector<double> v)
+{
+  if(v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+inline std::string fmt(double x, int prec = 3)
+{
+  if(!std::isfinite(x)) return "nan";
+  std::ostringstream s;
+  const double a = std::abs(x);
+  if(a != 0 && (a < 1e-3 || a >= 1e6)) s << std::setprecision(prec) << x;
+  else s << std::fixed << std::setprecision(prec) << x;
+  return s.str();
+}
+
+inline std::string fmt_time(double t)
+{
+  std::ostringstream s;
+  s << std::setprecision(3) << t;
+  return s.str();
+}
+
+inline std::string loadavg()
+{
+  std::ifstream in("/proc/loadavg");
+  std::string a, b, c;
+  in >> a >> b >> c;
+  return a + " " + b + " " + c;
+}
+
+/// "a, b,,c" → {"a", "b", "c"} (blanks dropped).
+inline std::vector<std::string> split(const std::string& s, char sep = ',')
+{
+  std::vector<std::string> out;
+  std::string cur;
+  for(char c : s) {
+    if(c == sep) { if(!cur.empty()) out.push_back(cur); cur.clear(); }
+    else if(c != ' ') cur += c;
+  }
+  if(!cur.empty()) out.push_back(cur);
+  return out;
+}
+
+/// A mesh spec: "name.off", "name.off+loopK" or "name.off+midK".
+struct Mesh_spec
+{
+  std::string file;
+  int loops = 0, midpoints = 0;
+};
+
+/// False, with `why`, for an unknown subdivision suffix.
+inline bool parse_mesh_spec(const std::string& spec, Mesh_spec& out, std::string& why)
+{
+  out = Mesh_spec();
+  out.file = spec;
+  const std::size_t plus = spec.find('+');
+  if(plus == std::string::npos) return true;
+  out.file = spec.substr(0, plus);
+  const std::string how = spec.substr(plus + 1);
+  if(how.rfind("loop", 0) == 0) out.loops = std::atoi(how.c_str() + 4);
+  else if(how.rfind("mid", 0) == 0) out.midpoints = std::atoi(how.c_str() + 3);
+  else { why = "unknown subdivision '" + how + "'"; return false; }
+  return true;
+}
+
+/// Splits every triangle into four at its edges' midpoints: the same surface,
+/// with triangles similar to the input's (Loop subdivision also smooths).
+template <class SurfaceMesh>
+void midpoint_subdivision(SurfaceMesh& mesh)
+{
+  typedef typename SurfaceMesh::Vertex_index Vertex;
+  SurfaceMesh out;
+  std::map<Vertex, Vertex> old;
+  std::map<std::pair<Vertex, Vertex>, Vertex> middle;
+  for(Vertex v : vertices(mesh)) old[v] = out.add_vertex(mesh.point(v));
+  const auto mid = [&](Vertex a, Vertex b) {
+    const auto key = std::minmax(a, b);
+    const auto it = middle.find(key);
+    if(it != middle.end()) return it->second;
+    return middle[key] = out.add_vertex(CGAL::midpoint(mesh.point(a), mesh.point(b)));
+  };
+  for(typename SurfaceMesh::Face_index f : faces(mesh)) {
+    const typename SurfaceMesh::Halfedge_index h = halfedge(f, mesh);
+    const Vertex a = source(h, mesh), b = target(h, mesh), c = target(next(h, mesh), mesh);
+    const Vertex ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
+    out.add_face(old[a], ab, ca);
+    out.add_face(ab, old[b], bc);
+    out.add_face(ca, bc, old[c]);
+    out.add_face(ab, bc, ca);
+  }
+  mesh = std::move(out);
+}
+
+/// The subdivision steps of `spec`, applied to the mesh read from its file.
+template <class SurfaceMesh>
+void subdivide(SurfaceMesh& mesh, const Mesh_spec& spec)
+{
+  if(spec.loops > 0) CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(spec.loops));
+  for(int k = 0; k < spec.midpoints; ++k) midpoint_subdivision(mesh);
+}
+
+} // namespace dlf_benchmark
+
+#endif
