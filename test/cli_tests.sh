@@ -172,6 +172,9 @@ check "--roi-ball: share within 1%" within_one_percent "$(json_region_values roi
 check "--roi-ball: region reached" equals "$(json_region_values roi.json reached)" true
 check "--roi-ball: summary shows the region" grep -q "region roi-ball -0.215988 -0.08166 0.21568 1: factor 4" roi.out
 check "--roi-ball: SVG outlines the region" grep -q "region of interest" roi.svg
+check "--roi-ball: the share tolerance is in the options" equals "$(json_get roi.json options share_tolerance)" 0.005
+check "--roi-ball: the share error is reported and within it" awk -v e="$(json_get roi.json density share_error)" \
+  'BEGIN { exit !(e != "" && e >= 0 && e <= 0.005) }'
 check "--tolerance given wins over the density tolerance" bash -c \
   "'$DLF' disk '$NEF' --roi-ball 0 0 0 1 --factor 2 --tolerance 0.01 --report tol.json -q && grep -q '\"tolerance\": 0.01' tol.json"
 # two regions from CGAL selection files: a face line, and a vertex line only
@@ -360,6 +363,7 @@ expect_error "sphere: negative --log-area-tolerance" 1 "log-area-tolerance" sphe
 expect_error "sphere: --roi-ball without --factor" 1 "factor" sphere "$MESHES/sphere.off" --roi-ball 0 0 1 0.8
 expect_error "sphere: --density and --roi exclude each other" 1 "exclude" sphere "$MESHES/sphere.off" --density sph_rho.txt --roi-ball 0 0 1 0.8 --factor 2
 expect_error "sphere: --band without a region" 1 "band" sphere "$MESHES/sphere.off" --band 0.1
+expect_error "sphere: negative --share-tolerance" 1 "share-tolerance" sphere "$MESHES/sphere.off" --share-tolerance -1
 expect_error "sphere: open mesh refused" 1 "ERROR_NOT_GENUS_0" sphere "$NEF"
 
 OUTPUTS="-o out/o.obj --svg out/l.svg" expect_error "--texture not an .obj" 1 "ending in .obj" disk input.off --texture out/t.png
@@ -383,6 +387,7 @@ check "info names the zero-area face" bash -c "'$DLF' info degenerate.off | grep
 expect_error "--density: wrong count" 1 "9 values; expected $NF (one per face) or $NV (one per vertex)" disk input.off --density short.rho
 expect_error "--density: zero" 1 "line 6: the density of face 4 is 0" disk input.off --density zero.rho
 expect_error "--density: negative" 1 "the density of face 4 is -2" disk input.off --density negative.rho
+expect_error "--share-tolerance: negative" 1 "share-tolerance must be a number >= 0" disk input.off --share-tolerance -0.1
 expect_error "--density: NaN" 1 "the density of face 4 is nan" disk input.off --density nan.rho
 expect_error "--density: not a number" 1 "line 6: '1,5' is not a number" disk input.off --density garbage.rho
 expect_error "--density: missing file" 1 "cannot open" disk input.off --density no_such.rho

@@ -20,6 +20,8 @@
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_density.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/density_levels.h>
+#include <CGAL/subdivision_method_3.h>
 
 #include <algorithm>
 #include <cmath>
@@ -189,6 +191,94 @@ TEST(DensityRegions, MeshWithBorderGeodesicBallSharesWithinOnePercent)
   load("mesh_with_border", m);
   const std::vector<SM_face> region = SMP::faces_in_geodesic_ball(m.sm, SM_vertex(54), 0.15 * m.diagonal);
   check_region_factors("mesh_with_border", region, m, 0.1 * m.diagonal);
+}
+
+// D_area lets a whole region drift on a finer mesh (nefertiti after one
+// Loop subdivision: ×0.5 ended 1.8% over its share at D_area 2.0005); the
+// share tolerance holds every region, and the report's share error is the
+// region's relative error, recomputed here.
+TEST(DensityRegions, ShareToleranceHoldsTheRegionsOfAFinerMesh)
+{
+  Loaded m;
+  load("nefertiti", m);
+  CGAL::Subdivision_method_3::Loop_subdivision(m.sm, CGAL::parameters::number_of_iterations(1));
+  m.bhd = boost::graph_traits<SM>::null_halfedge();
+  for(SM_halfedge h : halfedges(m.sm))
+    if(is_border(h, m.sm)) { m.bhd = h; break; }
+  const std::vector<SM_face> region_faces = SMP::faces_in_ball(m.sm, K::Point_3(-0.215988, -0.081660, 0.215680), 1.);
+  const std::set<SM_face> region(region_faces.begin(), region_faces.end());
+  ASSERT_GT(region.size(), 200u);
+  Density_map rho = m.sm.add_property_map<SM_face, double>("f:rho", 1.).first;
+  UV_map uv = m.sm.add_property_map<SM_vertex, K::Point_2>("v:uv").first;
+  double worst_without = 0;
+  for(double factor : { 0.25, 0.5, 2. }) {
+    SCOPED_TRACE("factor " + std::to_string(factor));
+    SMP::set_region_density(m.sm, region_faces, factor, rho, 0.);
+    for(double share_tolerance : { 0., 5e-3 }) {
+      SMP::Discrete_lie_flow_options options;
+      options.tolerance = Density_tolerance;
+      options.share_tolerance = share_tolerance;
+      Dlf dlf(Dlf::Initial_parameterizer(), options);
+      dlf.set_face_density(rho);
+      ASSERT_EQ(SMP::parameterize(m.sm, dlf, m.bhd, uv), SMP::OK) << dlf.report().message;
+      EXPECT_EQ(inverted_or_flat(m.sm, uv), 0u);
+      const std::pair<double, double> s = shares(m.sm, region, uv, rho);
+      const double error = std::abs(s.first - s.second) / (std::min)(s.second, 1 - s.second);
+      std::printf("  nefertiti+loop1 factor %4.2f share tolerance %g: %+.3f%%, %zu iterations (%s)\n", factor,
+                  share_tolerance, 100 * (s.first - s.second) / s.second, dlf.report().iterations,
+                  SMP::stop_reason_name(dlf.report().stop_reason));
+      // One jump, one cut: the report's error is the region's.
+      EXPECT_NEAR(dlf.report().final_share_error, error, 1e-9);
+      if(share_tolerance == 0) { worst_without = (std::max)(worst_without, error); continue; }
+      EXPECT_EQ(dlf.report().stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED);
+      EXPECT_LE(error, share_tolerance);
+    }
+  }
+  // Without the test on shares, some region misses the 1% goal: the mesh
+  // exercises what the tolerance is for.
+  EXPECT_GT(worst_without, 0.01);
+}
+
+// The regions checked: none for a uniform density, whatever its scale; the
+// region and its complement for a jump; and the region still a cut when a
+// band blends ρ between them.
+TEST(DensityRegions, ShareErrorCutsOnTheDensityValues)
+{
+  namespace D = CGAL::Surface_mesh_parameterization::internal::dlf;
+  // A strip of 2n unit right triangles; face t has area 1/2.
+  const int n = 50;
+  std::vector<D::Vec3> xyz;
+  std::vector<D::Face> faces;
+  for(int i = 0; i <= n; ++i) { xyz.push_back({{ double(i), 0, 0 }}); xyz.push_back({{ double(i), 1, 0 }}); }
+  for(int i = 0; i < n; ++i) {
+    faces.push_back({{ 2 * i, 2 * i + 2, 2 * i + 3 }});
+    faces.push_back({{ 2 * i, 2 * i + 3, 2 * i + 1 }});
+  }
+  const std::size_t F = faces.size();
+  std::vector<double> target(F, 0.5 * 3.), area(F, 1.);
+  const D::Density_levels uniform(xyz, faces, target);
+  EXPECT_TRUE(uniform.uniform());
+  area[0] = 5;
+  EXPECT_EQ(uniform.error(area), 0.);
+  // Region: the first 20 faces at ρ = 4 (prescribed share 80 / 160 = 1/2).
+  for(std::size_t t = 0; t < 20; ++t) target[t] = 0.5 * 4;
+  for(std::size_t t = 20; t < F; ++t) target[t] = 0.5;
+  const D::Density_levels jump(xyz, faces, target);
+  ASSERT_EQ(jump.cuts(), 1u);
+  std::vector<double> exact(target);
+  EXPECT_NEAR(jump.error(exact), 0., 1e-13);
+  // The region gets 0.51 of the domain instead of 0.5: 2% relative.
+  std::vector<double> off(F);
+  for(std::size_t t = 0; t < F; ++t) off[t] = t < 20 ? 0.51 / 20 : 0.49 / (F - 20);
+  EXPECT_NEAR(jump.error(off), 0.02, 1e-12);
+  // A band of 10 faces blending 4 → 1 keeps the region and the rest as cuts.
+  for(std::size_t t = 20; t < 30; ++t) target[t] = 0.5 * std::pow(4., 1 - double(t - 19) / 11);
+  const D::Density_levels band(xyz, faces, target);
+  EXPECT_GE(band.cuts(), 2u);
+  EXPECT_NEAR(band.error(target), 0., 1e-13);
+  std::vector<double> region_over(target);
+  for(std::size_t t = 0; t < 20; ++t) region_over[t] *= 1.1;
+  EXPECT_GT(band.error(region_over), 0.01);
 }
 
 // ρ ≡ 1, given as a face map, a vertex map or the options' vector, is the

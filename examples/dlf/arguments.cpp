@@ -252,6 +252,9 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
      "belongs to the k-th --roi or --roi-ball, and overlapping regions multiply")
     ("band", po::value<double>(&s.band)->value_name("W"),
      "width (3D length, along edges) of a transition from each region's factor to 1 around it")
+    ("share-tolerance", po::value<double>(&s.options.share_tolerance)->value_name("X")->default_value(s.options.share_tolerance),
+     "with a density, certified mode: converged also needs every region of the density (every set of faces below or above "
+     "a density value) within X of its prescribed share of the domain area, relative (0: d_area alone decides)")
     ("history", "add the per-iteration history to the report")
     ("quiet,q", "print nothing on success (no progress, no summary)")
     ("verbose,v", "progress with the step's details (critical step, limiting face, backtracks), never "
@@ -291,6 +294,8 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
   if(!s.density_file.empty() && !s.regions.empty()) throw Cli_error("--density and --roi/--roi-ball exclude each other");
   if(vm.count("band") && s.regions.empty()) throw Cli_error("--band applies to --roi and --roi-ball only");
   if(!(s.band >= 0) || !std::isfinite(s.band)) throw Cli_error("--band must be a number >= 0");
+  if(!(s.options.share_tolerance >= 0) || !std::isfinite(s.options.share_tolerance))
+    throw Cli_error("--share-tolerance must be a number >= 0");
   if(s.has_density() && vm["tolerance"].defaulted()) tolerance = density_tolerance;
   if(s.mode != "paper") {
     if(vm.count("literal-targets")) throw Cli_error("--literal-targets applies to --mode paper only");

@@ -123,12 +123,14 @@ json make_report(const Disk_settings& s, const Indexed_mesh& mesh, const Disk_ru
   j["domain_d_area"] = R.final_d_area;
   j["final_residual"] = R.final_residual;
   j["rejected_by_exact_check"] = R.rejected_by_exact_check;
-  j["options"] = { { "tolerance", s.options.tolerance }, { "max_iterations", s.options.max_iterations },
+  j["options"] = { { "tolerance", s.options.tolerance }, { "share_tolerance", s.options.share_tolerance },
+                   { "max_iterations", s.options.max_iterations },
                    { "mu", s.options.mu > 0 ? json(s.options.mu) : json(nullptr) }, // null: the mode's default
                    { "literal_targets", !s.options.lump_targets_on_flowing_faces },
                    { "delaunay_flips", s.options.delaunay_flips } };
   // Metrics above are density-weighted (DESIGN.md) when a density is given.
   j["density"] = density_json(s, density);
+  if(density.source != "none") j["density"]["share_error"] = R.final_share_error; // density_levels.h
   if(!density.regions.empty()) j["regions"] = regions_json(density, final_metrics != nullptr);
   if(s.history_in_report) j["history"] = history_json(R.history);
   return j;

@@ -89,6 +89,9 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
     ("tolerance", po::value<double>(&s.options.tolerance), "stop when d_area - 2 <= this (default 0.01) ...")
     ("log-area-tolerance", po::value<double>(&s.options.log_area_tolerance),
      "... and the mean |log area ratio| <= this (default 0.02; 0: d_area alone decides)")
+    ("share-tolerance", po::value<double>(&s.options.share_tolerance),
+     "... and, with a density, every region of it within this of its share of the sphere, relative "
+     "(default 0.005; 0: no such test)")
     ("max-iterations", po::value<std::size_t>(&s.options.max_iterations), "iteration cap (default 500)")
     ("mu", po::value<double>(&s.options.mu), "fraction of the critical step, in (0, 1) (default 0.8)")
     ("history", "per-iteration history in the report")
@@ -137,6 +140,8 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
   s.input = inputs[0];
   if(!(s.options.tolerance >= 0)) throw Cli_error("--tolerance must be >= 0");
   if(!(s.options.log_area_tolerance >= 0)) throw Cli_error("--log-area-tolerance must be >= 0");
+  if(!(s.options.share_tolerance >= 0) || !std::isfinite(s.options.share_tolerance))
+    throw Cli_error("--share-tolerance must be a number >= 0");
   if(vm.count("mu") && !(s.options.mu > 0 && s.options.mu < 1)) throw Cli_error("--mu must be in (0, 1)");
   if(s.mode != "certified" && s.mode != "paper")
     throw Cli_error("invalid value '" + s.mode + "' for --mode (expected certified or paper)");
@@ -274,6 +279,7 @@ int sphere_command(const std::vector<std::string>& args)
     j["stop_reason"] = SMP::stop_reason_name(R.stop_reason);
     j["seconds"] = { { "initial", R.seconds_initial }, { "flow", R.seconds_flow }, { "total", total } };
     j["options"] = { { "tolerance", s.options.tolerance }, { "log_area_tolerance", s.options.log_area_tolerance },
+                     { "share_tolerance", s.options.share_tolerance },
                      { "max_iterations", s.options.max_iterations },
                      { "mu", s.options.mu > 0 ? json(s.options.mu) : json(nullptr) }, // null: the default
                      { "literal_targets", !s.options.lump_targets_on_flowing_faces },
@@ -295,6 +301,7 @@ int sphere_command(const std::vector<std::string>& args)
       if(!density.regions.empty()) d["band"] = s.density.band;
       d["min"] = *std::min_element(density.face_density.begin(), density.face_density.end());
       d["max"] = *std::max_element(density.face_density.begin(), density.face_density.end());
+      d["share_error"] = R.final_share_error; // density_levels.h
       j["density"] = d;
     }
     if(!density.regions.empty()) {

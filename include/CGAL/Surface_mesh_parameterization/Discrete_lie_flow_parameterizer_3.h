@@ -7,6 +7,7 @@
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certified_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/density_levels.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/paper_flow.h>
 
 #include <CGAL/Surface_mesh_parameterization/Symmetric_barycentric_mapping_parameterizer_3.h>
@@ -251,6 +252,9 @@ public:
     R.initial_d_area = out.initial_d_area;
     R.final_d_area = out.final_d_area;
     R.final_residual = out.final_residual;
+    std::vector<double> caller_areas;
+    D::signed_areas_2(uv, P.faces, caller_areas);
+    R.final_share_error = D::Density_levels(P.xyz, P.faces, P.target).error(caller_areas);
     R.flips = out.flips;
     R.rejected_by_exact_check = out.rejected_by_exact_check;
     R.factorizations = out.factorizations;
@@ -259,7 +263,8 @@ public:
     R.seconds_assembly = out.seconds_assembly;
     R.seconds_solve = out.seconds_solve;
     R.seconds_step = out.seconds_step;
-    R.caller_inverted_faces = D::count_orientations_2(uv, P.faces).inverted + D::count_orientations_2(uv, P.faces).degenerate;
+    const D::Orientation_count cc = D::count_orientations_2(uv, P.faces);
+    R.caller_inverted_faces = cc.inverted + cc.degenerate;
     const D::Orientation_count dc = D::count_orientations_2(uv, domain);
     R.flowing_inverted_faces = dc.inverted + dc.degenerate;
     R.domain_faces.assign(domain.begin(), domain.end());

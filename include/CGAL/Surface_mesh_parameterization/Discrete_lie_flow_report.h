@@ -27,6 +27,9 @@ struct Discrete_lie_flow_report
   double initial_d_area = 0;    ///< on the certified triangulation, before the flow
   double final_d_area = 0;      ///< on the certified triangulation (the flowing one in paper mode)
   double final_residual = 0;    ///< Σ (A_Ω − A_M)² / (Σ A_Ω)² on that triangulation
+  /// The largest error of a region's share of the domain (density_levels.h;
+  /// the measure of `options.share_tolerance`); 0 without a density.
+  double final_share_error = 0;
   std::size_t flips = 0;        ///< paper mode
   std::size_t caller_inverted_faces = 0;   ///< the caller's triangles not positive under the final map (exact)
   std::size_t flowing_inverted_faces = 0;  ///< the certified triangulation's, always 0 on success

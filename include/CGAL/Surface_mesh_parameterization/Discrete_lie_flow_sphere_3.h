@@ -41,6 +41,9 @@ struct Discrete_lie_flow_sphere_report
   double initial_d_area = 0;    ///< of the certified initial map (flat triangles between sphere points)
   double final_d_area = 0;
   double final_residual = 0;    ///< Σ (A_Ω − A_M)² / (Σ A_Ω)²
+  /// The largest error of a region's share of the sphere (density_levels.h,
+  /// flat triangles; the measure of `options.share_tolerance`); 0 without a density.
+  double final_share_error = 0;
   /// Faces of the result not positively oriented (exact `orientation(O, p, q, r)`); 0 on success.
   std::size_t inverted_faces = 0, degenerate_faces = 0;
   std::size_t rejected_by_exact_check = 0; ///< trial steps the doubles accepted and the exact predicate refused
@@ -188,6 +191,7 @@ public:
     R.seconds_flow = std::chrono::duration<double>(Clock::now() - t1).count();
     record(out);
     R.final_metrics = D::spherical_distortion(P.xyz, p, P.faces, density());
+    R.final_share_error = share_error(P, p);
     const D::Orientation_count oc = D::count_orientations_sphere(p, P.faces);
     R.inverted_faces = oc.inverted;
     R.degenerate_faces = oc.degenerate;
@@ -230,6 +234,13 @@ private:
     return OK;
   }
 
+  static double share_error(const internal::dlf::Sphere_problem& P, const std::vector<internal::dlf::Vec3>& p)
+  {
+    std::vector<double> flat;
+    internal::dlf::signed_areas_sphere(p, P.faces, flat);
+    return internal::dlf::Density_levels(P.xyz, P.faces, P.target).error(flat);
+  }
+
   // Both modes: what the flow reports, into the report.
   void record(internal::dlf::Flow_outcome& out)
   {
@@ -270,6 +281,7 @@ private:
     R.flowing_non_delaunay_edges = out.non_delaunay_edges;
     R.flowing_faces.assign(out.flowing.begin(), out.flowing.end());
     R.final_metrics = D::spherical_distortion(P.xyz, p, P.faces, density());
+    R.final_share_error = share_error(P, p);
     const D::Orientation_count caller = D::count_orientations_sphere(p, P.faces);
     R.inverted_faces = caller.inverted;
     R.degenerate_faces = caller.degenerate;

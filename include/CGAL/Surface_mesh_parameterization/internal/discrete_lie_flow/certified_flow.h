@@ -15,6 +15,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/area_barrier_energy.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/boundary_curve.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/cotangent_laplacian.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/density_levels.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_problem.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/planar_gauss_newton.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/planar_relaxation.h>
@@ -192,9 +193,13 @@ Flow_outcome certified_disk_flow(const Disk_problem& P, std::vector<Vec2>& uv, B
   double lambda_prev = infinite_step();
   Vertex_faces around(0, std::vector<Face>());
   std::vector<char> movable;
+  const Density_levels levels(P.xyz, P.faces, P.target);
+  const auto converged = [&]() {
+    return E - 2 <= opt.tolerance && (!(opt.share_tolerance > 0) || levels.error(u) <= opt.share_tolerance);
+  };
   out.stop_reason = Discrete_lie_flow_stop_reason::ITERATION_CAP;
   for(std::size_t it = 1; it <= opt.max_iterations; ++it) {
-    if(E - 2 <= opt.tolerance) { out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED; break; }
+    if(converged()) { out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED; break; }
     // Gradient of E (or of L in the opening) in dof coordinates.
     const bool was_log_opening = log_opening;
     log_opening = !newton && settings.log_opening_above > 0 && E > settings.log_opening_above;
@@ -320,7 +325,7 @@ Flow_outcome certified_disk_flow(const Disk_problem& P, std::vector<Vec2>& uv, B
                          [&] { return area_residual(n, P.faces, u, P.target); }, out))
       break;
 
-    if(E - 2 <= opt.tolerance) { out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED; break; }
+    if(converged()) { out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED; break; }
     if(E_history.size() > opt.plateau_window) {
       const double old = E_history[E_history.size() - 1 - opt.plateau_window];
       if(old - E < opt.plateau_tolerance * (E - 1)) { out.stop_reason = Discrete_lie_flow_stop_reason::PLATEAU; break; }

@@ -28,6 +28,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certified_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/cotangent_laplacian.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/density_levels.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_problem.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_gauss_newton.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_problem.h>
@@ -250,9 +251,14 @@ Flow_outcome certified_sphere_flow(const Sphere_problem& P, std::vector<Vec3>& p
   double lambda_prev = infinite_step();
   std::size_t hard_steps = 0; // consecutive steps that needed many halvings
   out.stop_reason = Discrete_lie_flow_stop_reason::ITERATION_CAP;
+  const Density_levels levels(P.xyz, P.faces, P.target);
+  std::vector<double> flat_areas;
   const auto converged = [&]() {
-    return D - 2 <= opt.tolerance &&
-           (!(opt.log_area_tolerance > 0) || flat_mean_abs_log_ratio(p, P.faces, P.target) <= opt.log_area_tolerance);
+    if(!(D - 2 <= opt.tolerance)) return false;
+    if(opt.log_area_tolerance > 0 && !(flat_mean_abs_log_ratio(p, P.faces, P.target) <= opt.log_area_tolerance)) return false;
+    if(!(opt.share_tolerance > 0) || levels.uniform()) return true;
+    signed_areas_sphere(p, P.faces, flat_areas);
+    return levels.error(flat_areas) <= opt.share_tolerance;
   };
   for(std::size_t it = 1; it <= opt.max_iterations; ++it) {
     if(converged()) { out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED; break; }
