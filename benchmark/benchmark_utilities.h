@@ -11,14 +11,19 @@
 #include <CGAL/subdivision_method_3.h>
 #include <CGAL/boost/graph/iterator.h>
 
+#include <boost/program_options.hpp>
+
 #include <time.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <exception>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <iostream>
 #include <map>
 #include <sstream>
 #include <string>
@@ -83,6 +88,31 @@ inline std::vector<std::string> split(const std::string& s, char sep = ',')
   }
   if(!cur.empty()) out.push_back(cur);
   return out;
+}
+
+/// Parses the command line into `vm`. Returns −1 to go on, or the exit
+/// status: 0 after printing the help (--help), 2 after reporting an error.
+inline int parse_command_line(const char* program, const boost::program_options::options_description& desc,
+                              int argc, char** argv, boost::program_options::variables_map& vm)
+{
+  try {
+    boost::program_options::store(boost::program_options::parse_command_line(argc, argv, desc), vm);
+    boost::program_options::notify(vm);
+  } catch(const std::exception& e) {
+    std::cerr << program << ": " << e.what() << "\n";
+    return 2;
+  }
+  if(vm.count("help")) { std::cout << desc << "\n"; return 0; }
+  return -1;
+}
+
+/// `data_dir`/meshes, absolute; empty (and reported) when it is no directory.
+inline std::filesystem::path mesh_directory(const char* program, const std::string& data_dir)
+{
+  const std::filesystem::path dir = std::filesystem::absolute(std::filesystem::path(data_dir) / "meshes");
+  if(std::filesystem::is_directory(dir)) return dir;
+  std::cerr << program << ": no directory " << dir << "\n";
+  return std::filesystem::path();
 }
 
 /// A mesh spec: "name.off", "name.off+loopK" or "name.off+midK".

@@ -266,17 +266,11 @@ int main(int argc, char** argv)
     ("json", po::value<std::string>(&json_out)->default_value("density_benchmark.json"), "JSON output")
     ("markdown", po::value<std::string>(&md_out)->default_value("density_benchmark.md"), "Markdown tables output");
   po::variables_map vm;
-  try {
-    po::store(po::parse_command_line(argc, argv, desc), vm);
-    po::notify(vm);
-  } catch(const std::exception& e) {
-    std::cerr << "density_benchmark: " << e.what() << "\n";
-    return 2;
-  }
-  if(vm.count("help")) { std::cout << desc << "\n"; return 0; }
+  const int status = parse_command_line("density_benchmark", desc, argc, argv, vm);
+  if(status >= 0) return status;
   if(repeats < 1 || !(tolerance > 0)) { std::cerr << "density_benchmark: --repeats >= 1 and --tolerance > 0\n"; return 2; }
-  const fs::path mesh_dir = fs::absolute(fs::path(data_dir) / "meshes");
-  if(!fs::is_directory(mesh_dir)) { std::cerr << "density_benchmark: no directory " << mesh_dir << "\n"; return 1; }
+  const fs::path mesh_dir = mesh_directory("density_benchmark", data_dir);
+  if(mesh_dir.empty()) return 1;
 
   std::vector<double> factors, bands;
   for(const std::string& s : split(factors_arg)) factors.push_back(std::atof(s.c_str()));

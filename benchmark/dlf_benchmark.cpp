@@ -453,14 +453,8 @@ int main(int argc, char** argv)
     ("json", po::value<std::string>(&json_out)->default_value("benchmark.json"), "JSON output")
     ("markdown", po::value<std::string>(&md_out)->default_value("benchmark_tables.md"), "Markdown tables output");
   po::variables_map vm;
-  try {
-    po::store(po::parse_command_line(argc, argv, desc), vm);
-    po::notify(vm);
-  } catch(const std::exception& e) {
-    std::cerr << "dlf_benchmark: " << e.what() << "\n";
-    return 2;
-  }
-  if(vm.count("help")) { std::cout << desc << "\n"; return 0; }
+  const int status = parse_command_line("dlf_benchmark", desc, argc, argv, vm);
+  if(status >= 0) return status;
 
   std::vector<int> methods;
   for(const std::string& s : split(methods_arg)) {
@@ -469,7 +463,8 @@ int main(int argc, char** argv)
     if(found < 0) { std::cerr << "dlf_benchmark: unknown method " << s << " (known: " << all_methods << ")\n"; return 2; }
     methods.push_back(found);
   }
-  const fs::path mesh_dir = fs::absolute(fs::path(data_dir) / "meshes");
+  const fs::path mesh_dir = mesh_directory("dlf_benchmark", data_dir);
+  if(mesh_dir.empty()) return 1;
   const fs::path json_path = fs::absolute(json_out), md_path = fs::absolute(md_out);
 
   // Run every CGAL call from a scratch directory: Iterative_authalic_parameterizer_3

@@ -290,16 +290,10 @@ int main(int argc, char** argv)
     ("json", po::value<std::string>(&json_out)->default_value("sphere_benchmark.json"), "JSON output")
     ("markdown", po::value<std::string>(&md_out)->default_value("sphere_benchmark.md"), "Markdown tables output");
   po::variables_map vm;
-  try {
-    po::store(po::parse_command_line(argc, argv, desc), vm);
-    po::notify(vm);
-  } catch(const std::exception& e) {
-    std::cerr << "sphere_benchmark: " << e.what() << "\n";
-    return 2;
-  }
-  if(vm.count("help")) { std::cout << desc << "\n"; return 0; }
-  const fs::path mesh_dir = fs::absolute(fs::path(data_dir) / "meshes");
-  if(!fs::is_directory(mesh_dir)) { std::cerr << "sphere_benchmark: no directory " << mesh_dir << "\n"; return 1; }
+  const int status = parse_command_line("sphere_benchmark", desc, argc, argv, vm);
+  if(status >= 0) return status;
+  const fs::path mesh_dir = mesh_directory("sphere_benchmark", data_dir);
+  if(mesh_dir.empty()) return 1;
   const bool explicit_list = !meshes_arg.empty();
   std::vector<std::string> specs = split(meshes_arg);
   if(!explicit_list) {
