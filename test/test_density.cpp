@@ -240,8 +240,8 @@ TEST(DensityRegions, ShareToleranceHoldsTheRegionsOfAFinerMesh)
 }
 
 // The regions checked: none for a uniform density, whatever its scale; the
-// region and its complement for a jump; and the region still a cut when a
-// band blends ρ between them.
+// region and its complement for a jump; the region still a cut when a band
+// blends ρ between them; the tenths of the measure for a smooth density.
 TEST(DensityRegions, ShareErrorCutsOnTheDensityValues)
 {
   namespace D = CGAL::Surface_mesh_parameterization::internal::dlf;
@@ -279,6 +279,22 @@ TEST(DensityRegions, ShareErrorCutsOnTheDensityValues)
   std::vector<double> region_over(target);
   for(std::size_t t = 0; t < 20; ++t) region_over[t] *= 1.1;
   EXPECT_GT(band.error(region_over), 0.01);
+  // A smooth density on a finer strip (every face its own value, each under
+  // 1% of the measure): cut at each tenth of the measure only.
+  std::vector<D::Vec3> fine_xyz;
+  std::vector<D::Face> fine_faces;
+  const int m = 500;
+  for(int i = 0; i <= m; ++i) { fine_xyz.push_back({{ double(i), 0, 0 }}); fine_xyz.push_back({{ double(i), 1, 0 }}); }
+  for(int i = 0; i < m; ++i) {
+    fine_faces.push_back({{ 2 * i, 2 * i + 2, 2 * i + 3 }});
+    fine_faces.push_back({{ 2 * i, 2 * i + 3, 2 * i + 1 }});
+  }
+  std::vector<double> smooth_target(fine_faces.size());
+  for(std::size_t t = 0; t < fine_faces.size(); ++t) smooth_target[t] = 0.5 * std::exp(2 * double(t) / double(fine_faces.size()));
+  const D::Density_levels smooth(fine_xyz, fine_faces, smooth_target);
+  EXPECT_GE(smooth.cuts(), 9u);
+  EXPECT_LE(smooth.cuts(), 10u);
+  EXPECT_NEAR(smooth.error(smooth_target), 0., 1e-13);
 }
 
 // ρ ≡ 1, given as a face map, a vertex map or the options' vector, is the
