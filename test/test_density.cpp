@@ -239,56 +239,56 @@ TEST(DensityRegions, ShareToleranceHoldsTheRegionsOfAFinerMesh)
   EXPECT_GT(worst_without, 0.01);
 }
 
-// The regions checked: none for a uniform density, whatever its scale; the
-// region and its complement for a jump; the region still a cut when a band
-// blends ρ between them; the tenths of the measure for a smooth density.
+// The regions checked: none for a uniform density, whatever its scale, or
+// for a region of a few faces; the region and its complement for a jump; the
+// region still a cut when a band blends ρ between them; the tenths of the
+// measure for a smooth density.
 TEST(DensityRegions, ShareErrorCutsOnTheDensityValues)
 {
   namespace D = CGAL::Surface_mesh_parameterization::internal::dlf;
   // A strip of 2n unit right triangles; face t has area 1/2.
-  const int n = 50;
+  const auto strip = [](int n, std::vector<D::Vec3>& xyz, std::vector<D::Face>& faces) {
+    for(int i = 0; i <= n; ++i) { xyz.push_back({{ double(i), 0, 0 }}); xyz.push_back({{ double(i), 1, 0 }}); }
+    for(int i = 0; i < n; ++i) {
+      faces.push_back({{ 2 * i, 2 * i + 2, 2 * i + 3 }});
+      faces.push_back({{ 2 * i, 2 * i + 3, 2 * i + 1 }});
+    }
+  };
   std::vector<D::Vec3> xyz;
   std::vector<D::Face> faces;
-  for(int i = 0; i <= n; ++i) { xyz.push_back({{ double(i), 0, 0 }}); xyz.push_back({{ double(i), 1, 0 }}); }
-  for(int i = 0; i < n; ++i) {
-    faces.push_back({{ 2 * i, 2 * i + 2, 2 * i + 3 }});
-    faces.push_back({{ 2 * i, 2 * i + 3, 2 * i + 1 }});
-  }
-  const std::size_t F = faces.size();
+  strip(100, xyz, faces);
+  const std::size_t F = faces.size(), R = 40; // R region faces, more than min_faces
   std::vector<double> target(F, 0.5 * 3.), area(F, 1.);
   const D::Density_levels uniform(xyz, faces, target);
   EXPECT_TRUE(uniform.uniform());
   area[0] = 5;
   EXPECT_EQ(uniform.error(area), 0.);
-  // Region: the first 20 faces at ρ = 4 (prescribed share 80 / 160 = 1/2).
-  for(std::size_t t = 0; t < 20; ++t) target[t] = 0.5 * 4;
-  for(std::size_t t = 20; t < F; ++t) target[t] = 0.5;
+  // Region: the first R faces at ρ = 4 (prescribed share 80 / 160 = 1/2).
+  for(std::size_t t = 0; t < F; ++t) target[t] = t < R ? 0.5 * 4 : 0.5;
   const D::Density_levels jump(xyz, faces, target);
   ASSERT_EQ(jump.cuts(), 1u);
-  std::vector<double> exact(target);
-  EXPECT_NEAR(jump.error(exact), 0., 1e-13);
+  EXPECT_NEAR(jump.error(target), 0., 1e-13);
   // The region gets 0.51 of the domain instead of 0.5: 2% relative.
   std::vector<double> off(F);
-  for(std::size_t t = 0; t < F; ++t) off[t] = t < 20 ? 0.51 / 20 : 0.49 / (F - 20);
+  for(std::size_t t = 0; t < F; ++t) off[t] = t < R ? 0.51 / R : 0.49 / (F - R);
   EXPECT_NEAR(jump.error(off), 0.02, 1e-12);
-  // A band of 10 faces blending 4 → 1 keeps the region and the rest as cuts.
-  for(std::size_t t = 20; t < 30; ++t) target[t] = 0.5 * std::pow(4., 1 - double(t - 19) / 11);
+  // A region of fewer than min_faces faces is not held.
+  std::vector<double> small(F, 0.5);
+  for(std::size_t t = 0; t < D::Density_levels::min_faces - 1; ++t) small[t] = 0.5 * 4;
+  EXPECT_TRUE(D::Density_levels(xyz, faces, small).uniform());
+  // A band of 20 faces blending 4 → 1 keeps the region and the rest as cuts.
+  for(std::size_t t = R; t < R + 20; ++t) target[t] = 0.5 * std::pow(4., 1 - double(t - R + 1) / 21);
   const D::Density_levels band(xyz, faces, target);
   EXPECT_GE(band.cuts(), 2u);
   EXPECT_NEAR(band.error(target), 0., 1e-13);
   std::vector<double> region_over(target);
-  for(std::size_t t = 0; t < 20; ++t) region_over[t] *= 1.1;
+  for(std::size_t t = 0; t < R; ++t) region_over[t] *= 1.1;
   EXPECT_GT(band.error(region_over), 0.01);
-  // A smooth density on a finer strip (every face its own value, each under
-  // 1% of the measure): cut at each tenth of the measure only.
+  // A smooth density on a finer strip (every face its own value): cut at
+  // each tenth of the measure only.
   std::vector<D::Vec3> fine_xyz;
   std::vector<D::Face> fine_faces;
-  const int m = 500;
-  for(int i = 0; i <= m; ++i) { fine_xyz.push_back({{ double(i), 0, 0 }}); fine_xyz.push_back({{ double(i), 1, 0 }}); }
-  for(int i = 0; i < m; ++i) {
-    fine_faces.push_back({{ 2 * i, 2 * i + 2, 2 * i + 3 }});
-    fine_faces.push_back({{ 2 * i, 2 * i + 3, 2 * i + 1 }});
-  }
+  strip(500, fine_xyz, fine_faces);
   std::vector<double> smooth_target(fine_faces.size());
   for(std::size_t t = 0; t < fine_faces.size(); ++t) smooth_target[t] = 0.5 * std::exp(2 * double(t) / double(fine_faces.size()));
   const D::Density_levels smooth(fine_xyz, fine_faces, smooth_target);

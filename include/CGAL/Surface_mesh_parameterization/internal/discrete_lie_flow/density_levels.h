@@ -26,20 +26,21 @@ namespace internal {
 namespace dlf {
 
 /// The sublevel sets {ρ < c} of a per-face density on which the achieved
-/// share of the domain's area is held against the prescribed one. A cut c
-/// lies between two consecutive distinct values of ρ and is kept when one of
-/// the two values holds at least `floor` of the prescribed measure (a region
-/// of a region density, or the rest of the surface), or when the cumulative
-/// measure crosses a tenth there (smooth densities). Faces of one region
-/// share one value, so a region is always a sublevel set or the complement
-/// of one.
+/// share of the domain's area is held against the prescribed one, relative
+/// to the smaller of the set and its complement. A cut c lies between two
+/// consecutive distinct values of ρ and is kept when one of the two values
+/// has at least `min_faces` faces (a region of a region density, or the
+/// rest of the surface), or when the cumulative measure crosses a tenth there
+/// (smooth densities); and only when each side has `min_faces` faces. Faces
+/// of one region share one value, so a region is a sublevel set or the
+/// complement of one.
 class Density_levels
 {
 public:
-  /// Regions below this share of the domain are held to an absolute error of
-  /// `floor` × tolerance instead of a relative one: their share is the sum
-  /// of a few faces, each off by its own rounding of the flow.
-  static constexpr double floor = 0.01;
+  /// Sets of fewer faces are not held: their share is the sum of a few
+  /// faces' own errors (at D_area 2.0005 about 2% each), which the flow
+  /// brings down only with D_area itself.
+  static constexpr std::size_t min_faces = 32;
 
   /// `target[t]` = ρ_t · area_M(t) (any common scale) of the triangles `faces` of `xyz`.
   Density_levels(const std::vector<Vec3>& xyz, const std::vector<Face>& faces, const std::vector<double>& target)
@@ -52,7 +53,7 @@ public:
       rho[t] = target[t] / triangle_area_3(xyz[f[0]], xyz[f[1]], xyz[f[2]]);
       total += target[t];
     }
-    if(F == 0 || !(total > 0)) return;
+    if(F < 2 * min_faces || !(total > 0)) return;
     m_order.resize(F);
     std::iota(m_order.begin(), m_order.end(), std::size_t(0));
     std::stable_sort(m_order.begin(), m_order.end(), [&](std::size_t a, std::size_t b) { return rho[a] < rho[b]; });
@@ -70,9 +71,13 @@ public:
     for(std::size_t g = 0; g + 1 < end.size(); ++g) {
       const double before = cumulative;
       cumulative += mass[g];
-      const bool atom = mass[g] >= floor || mass[g + 1] >= floor;
+      const std::size_t size = end[g] - (g > 0 ? end[g - 1] : 0), next = end[g + 1] - end[g];
+      const bool region = size >= min_faces || next >= min_faces;
       const bool tenth = std::floor(10 * cumulative) != std::floor(10 * before);
-      if(atom || tenth) { m_cut.push_back(end[g]); m_prescribed.push_back(cumulative); }
+      if((region || tenth) && end[g] >= min_faces && F - end[g] >= min_faces) {
+        m_cut.push_back(end[g]);
+        m_prescribed.push_back(cumulative);
+      }
     }
   }
 
@@ -80,7 +85,7 @@ public:
   bool uniform() const { return m_cut.empty(); }
 
   /// The largest error over the cuts of the domain's share of {ρ < c},
-  /// |achieved − prescribed| / max(min(prescribed, 1 − prescribed), floor),
+  /// |achieved − prescribed| / min(prescribed, 1 − prescribed),
   /// for the signed domain areas `area` (per face, the order of `faces`;
   /// folds, in paper mode, count negatively); +∞ when their sum is not positive.
   double error(const std::vector<double>& area) const
@@ -94,7 +99,7 @@ public:
     for(std::size_t c = 0; c < m_cut.size(); ++c) {
       for(; k < m_cut[c]; ++k) achieved += area[m_order[k]];
       const double p = m_prescribed[c];
-      const double e = std::abs(achieved / total - p) / (std::max)((std::min)(p, 1 - p), floor);
+      const double e = std::abs(achieved / total - p) / (std::min)(p, 1 - p);
       worst = (std::max)(worst, e);
     }
     return worst;
