@@ -169,10 +169,11 @@ struct Discrete_lie_flow_options
   /// With a non-uniform density, stop as converged only once every region of
   /// ρ (every sublevel set {ρ < c} between two of its values, and its
   /// complement) also has its prescribed share of the domain's area within
-  /// this, relative (regions of fewer than 32 faces are not held: their
-  /// share is a few faces' rounding); 0: D_area alone decides. D_area weighs each face's own error, so it
-  /// lets a whole region drift: at D_area 2.0005 a region scaled by 0.5 was
-  /// 1.8% off. The paper mode ignores it (it is the paper's flow).
+  /// this, relative; regions of fewer than 32 faces are not held (their
+  /// share is a few faces' rounding). 0: D_area alone decides. D_area weighs
+  /// each face's own error, so it lets a whole region drift: at D_area
+  /// 2.0005 a region scaled by 0.5 was 1.8% off. The paper mode ignores it
+  /// (it is the paper's flow).
   double share_tolerance = 5e-3;
   /// Hard cap on the number of iterations.
   std::size_t max_iterations = 500;
