@@ -92,8 +92,8 @@ inline std::vector<std::string> split(const std::string& s, char sep = ',')
 
 /// Parses the command line into `vm`. Returns −1 to go on, or the exit
 /// status: 0 after printing the help (--help), 2 after reporting an error.
-inline int parse_command_line(const char* program, const boost::program_options::options_description& desc,
-                              int argc, char** argv, boost::program_options::variables_map& vm)
+inline int parse_options(const char* program, const boost::program_options::options_description& desc,
+                         int argc, char** argv, boost::program_options::variables_map& vm)
 {
   try {
     boost::program_options::store(boost::program_options::parse_command_line(argc, argv, desc), vm);

@@ -266,7 +266,7 @@ int main(int argc, char** argv)
     ("json", po::value<std::string>(&json_out)->default_value("density_benchmark.json"), "JSON output")
     ("markdown", po::value<std::string>(&md_out)->default_value("density_benchmark.md"), "Markdown tables output");
   po::variables_map vm;
-  const int status = parse_command_line("density_benchmark", desc, argc, argv, vm);
+  const int status = parse_options("density_benchmark", desc, argc, argv, vm);
   if(status >= 0) return status;
   if(repeats < 1 || !(tolerance > 0)) { std::cerr << "density_benchmark: --repeats >= 1 and --tolerance > 0\n"; return 2; }
   const fs::path mesh_dir = mesh_directory("density_benchmark", data_dir);

@@ -453,7 +453,7 @@ int main(int argc, char** argv)
     ("json", po::value<std::string>(&json_out)->default_value("benchmark.json"), "JSON output")
     ("markdown", po::value<std::string>(&md_out)->default_value("benchmark_tables.md"), "Markdown tables output");
   po::variables_map vm;
-  const int status = parse_command_line("dlf_benchmark", desc, argc, argv, vm);
+  const int status = parse_options("dlf_benchmark", desc, argc, argv, vm);
   if(status >= 0) return status;
 
   std::vector<int> methods;

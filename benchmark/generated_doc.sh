@@ -62,6 +62,6 @@ run_into_doc() {
   ' "$doc" > "$tmp/doc.md"
   cp "$tmp/doc.md" "$doc"
   sed -e "s|$tmp/||g" -e "s|$build/||g" -e "s|$root/||g" "$tmp/$name.json" > "$json"
-  cat "$tmp/stdout.txt" | tail -n 3
+  tail -n 3 "$tmp/stdout.txt"
   echo "wrote $doc and $json"
 }

@@ -290,7 +290,7 @@ int main(int argc, char** argv)
     ("json", po::value<std::string>(&json_out)->default_value("sphere_benchmark.json"), "JSON output")
     ("markdown", po::value<std::string>(&md_out)->default_value("sphere_benchmark.md"), "Markdown tables output");
   po::variables_map vm;
-  const int status = parse_command_line("sphere_benchmark", desc, argc, argv, vm);
+  const int status = parse_options("sphere_benchmark", desc, argc, argv, vm);
   if(status >= 0) return status;
   const fs::path mesh_dir = mesh_directory("sphere_benchmark", data_dir);
   if(mesh_dir.empty()) return 1;

@@ -105,6 +105,7 @@ public:
     return worst;
   }
 
+  /// How many sets are held.
   std::size_t cuts() const { return m_cut.size(); }
 
 private:
