@@ -8,7 +8,7 @@
 // Every method goes through CGAL::Surface_mesh_parameterization::parameterize()
 // and is timed on that call alone (median of --repeats runs on fresh copies
 // below --repeat-below faces, one run above). Every uv map is scored by the
-// same function, internal::dlf::planar_distortion (DESIGN.md, Metrics), on
+// same function, internal::dlf::planar_distortion (doc/design.md, "Metrics"), on
 // the caller's triangles; the paper mode is scored on its flowing
 // triangulation as well (report().domain_faces).
 //

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Robustness study (issue 7): builds the corpus runner and dlf, runs the
+# Robustness study: builds the corpus runner and dlf, runs the
 # hostile-input corpus through dlf disk/sphere, the DLF library API and CGAL's
 # iterative authalic, ARAP and mean-value parameterizers, and writes the
 # tables into doc/robustness.md (between the GENERATED markers; the policy

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Discrete Lie Flow authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Robustness study (issue 7): a deterministic corpus of hostile inputs derived
+// Robustness study: a deterministic corpus of hostile inputs derived
 // from CGAL's data set and from generated meshes, run through `dlf disk`,
 // `dlf sphere` (subprocesses with a timeout and a memory limit), CGAL's
 // iterative authalic, ARAP and mean-value parameterizers and the DLF library
@@ -588,7 +588,7 @@ json run_dlf(const std::string& dlf, const Case& c, const std::string& file, con
   fs::remove(out); fs::remove(rep); fs::remove(domain);
   std::vector<std::string> argv = { dlf, c.kind == "sphere" ? "sphere" : "disk", file, "-o", out, "--report", rep };
   // The paper mode certifies its flowing (flipped) triangulation and reports
-  // the caller's triangles that fold (DESIGN.md): check the former.
+  // the caller's triangles that fold (doc/design.md): check the former.
   const bool paper = c.kind == "disk" && mode == "paper";
   if(paper) for(const char* a : { "--mode", "paper", "--domain-mesh" }) argv.push_back(a);
   if(paper) argv.push_back(domain);

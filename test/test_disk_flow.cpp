@@ -92,7 +92,7 @@ long double area_3(const V3& a, const V3& b, const V3& c)
   return 0.5L * std::sqrt(x * x + y * y + z * z);
 }
 
-/// D_area = Σ w_t (r_t + 1/r_t), w_t = A_t/ΣA, r_t = (|u_t|/Σ|u|)/w_t (DESIGN.md),
+/// D_area = Σ w_t (r_t + 1/r_t), w_t = A_t/ΣA, r_t = (|u_t|/Σ|u|)/w_t (doc/design.md),
 /// written as Σ (v_t + w_t²/v_t) with v_t = |u_t|/Σ|u|, so that a face with a
 /// flat 3D triangle (w_t = 0, possible after flips) contributes its limit v_t.
 double d_area(const std::vector<V3>& xyz, const std::vector<V2>& uv, const std::vector<Tri>& faces)

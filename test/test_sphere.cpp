@@ -92,7 +92,7 @@ long double flat_area(const V3& a, const V3& b, const V3& c)
   return 0.5L * std::sqrt(x * x + y * y + z * z);
 }
 
-/// D_area of DESIGN.md on the flat triangles between the sphere points,
+/// D_area of doc/design.md on the flat triangles between the sphere points,
 /// and the mean |log area ratio|, recomputed in long double.
 std::pair<double, double> sphere_d_area(const std::vector<V3>& xyz, const std::vector<V3>& p, const std::vector<Tri>& faces)
 {

@@ -128,7 +128,7 @@ json make_report(const Disk_settings& s, const Indexed_mesh& mesh, const Disk_ru
                    { "mu", s.options.mu > 0 ? json(s.options.mu) : json(nullptr) }, // null: the mode's default
                    { "literal_targets", !s.options.lump_targets_on_flowing_faces },
                    { "delaunay_flips", s.options.delaunay_flips } };
-  // Metrics above are density-weighted (DESIGN.md) when a density is given.
+  // Metrics above are density-weighted (doc/design.md) when a density is given.
   j["density"] = density_json(s, density);
   if(density.source != "none") j["density"]["share_error"] = R.final_share_error; // density_levels.h
   if(!density.regions.empty()) j["regions"] = regions_json(density, final_metrics != nullptr);

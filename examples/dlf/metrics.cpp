@@ -12,7 +12,7 @@ Metrics compute_metrics(const Indexed_mesh& mesh, const std::vector<Vec2>& uv, c
 
 nlohmann::ordered_json metrics_to_json(const Metrics& m)
 {
-  // Field names are fixed by DESIGN.md; the last two are additions.
+  // Field names are fixed by doc/design.md ("Metrics"); the last two are additions.
   return nlohmann::ordered_json{
     { "d_area", m.d_area },
     { "arap", m.arap },

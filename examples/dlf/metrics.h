@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Discrete Lie Flow authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The METRICS block of DESIGN.md (computed by the library's
+// The METRICS block of doc/design.md (computed by the library's
 // planar_distortion()), as JSON and as text.
 
 #ifndef DLF_CLI_METRICS_H

@@ -3,7 +3,7 @@
 //
 // `dlf sphere`: map a closed genus-0 mesh onto the unit sphere; write the
 // sphere points in input vertex order with the input faces (all outputs or
-// none), and the JSON report of DESIGN.md.
+// none), and the JSON report of doc/design.md.
 
 #include "arguments.h"
 #include "cli_error.h"

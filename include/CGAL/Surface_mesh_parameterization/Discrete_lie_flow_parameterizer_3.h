@@ -6,9 +6,9 @@
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certified_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/planar_certified_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/density_levels.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/paper_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/planar_paper_flow.h>
 
 #include <CGAL/Surface_mesh_parameterization/Symmetric_barycentric_mapping_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
@@ -240,11 +240,16 @@ public:
 
     const Clock::time_point t0 = Clock::now();
     D::Flow_outcome out;
-    std::vector<D::Face> domain = P.faces;
-    if(m_options.mode == Discrete_lie_flow_mode::PAPER)
-      out = D::paper_disk_flow(P, uv, curve, m_options, m_solver_traits.solver(), domain);
-    else
-      out = D::certified_disk_flow(P, uv, curve, m_options, m_solver_traits.solver());
+    if(m_options.mode == Discrete_lie_flow_mode::PAPER) {
+      D::Planar_paper_flow<typename Solver_traits::Solver> flow(P, uv, curve, m_options, m_solver_traits.solver(),
+                                                                D::Paper_flow_settings());
+      out = D::run_flow(flow, m_options);
+    } else {
+      D::Planar_certified_flow<typename Solver_traits::Solver> flow(P, uv, curve, m_options, m_solver_traits.solver(),
+                                                                    D::Planar_flow_settings());
+      out = D::run_flow(flow, m_options);
+    }
+    const std::vector<D::Face>& domain = out.domain_faces;
     R.seconds_flow = std::chrono::duration<double>(Clock::now() - t0).count();
 
     R.stop_reason = out.stop_reason;
@@ -268,17 +273,11 @@ public:
     const D::Orientation_count dc = D::count_orientations_2(uv, domain);
     R.flowing_inverted_faces = dc.inverted + dc.degenerate;
     R.domain_faces.assign(domain.begin(), domain.end());
-    std::vector<double> u, target_on_domain(domain.size());
+    // The area elements of the final triangulation, with the targets the flow used on it.
+    std::vector<double> u;
     D::signed_areas_2(uv, domain, u);
-    const std::vector<double> rho = D::vertex_density(P);
-    for(std::size_t f = 0; f < domain.size(); ++f) {
-      const D::Face& t = domain[f];
-      target_on_domain[f] = (m_options.mode == Discrete_lie_flow_mode::PAPER)
-        ? D::triangle_area_3(P.xyz[t[0]], P.xyz[t[1]], P.xyz[t[2]]) * (rho[t[0]] + rho[t[1]] + rho[t[2]]) / 3
-        : P.target[f];
-    }
     D::lump_on_vertices(uv.size(), domain, u, R.domain_area);
-    D::lump_on_vertices(uv.size(), domain, target_on_domain, R.target_area);
+    D::lump_on_vertices(uv.size(), domain, out.domain_target, R.target_area);
     double so = 0, st = 0;
     for(std::size_t i = 0; i < uv.size(); ++i) { so += R.domain_area[i]; st += R.target_area[i]; }
     for(double& a : R.target_area) a *= so / st;

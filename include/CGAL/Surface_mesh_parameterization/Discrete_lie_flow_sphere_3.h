@@ -6,7 +6,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_parameterizer_3.h> // Default_spd_solver
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_certified_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_initial_map.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_problem.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_paper_flow.h>
@@ -55,7 +55,7 @@ struct Discrete_lie_flow_sphere_report
   /// Split of seconds_flow: matrix assembly, factorisation and solve, step search, certification and
   /// the polish's vertex relaxation.
   double seconds_assembly = 0, seconds_solve = 0, seconds_step = 0;
-  /// The metrics of DESIGN.md of the initial and the final map (valid when status is OK).
+  /// The metrics of doc/design.md of the initial and the final map (valid when status is OK).
   internal::dlf::Distortion_metrics initial_metrics, final_metrics;
   std::vector<Discrete_lie_flow_iteration> history; ///< when options.record_history
   /// Paper mode: there `inverted_faces` and `degenerate_faces` count the
@@ -279,13 +279,13 @@ private:
     record(out);
     R.flips = out.flips;
     R.flowing_non_delaunay_edges = out.non_delaunay_edges;
-    R.flowing_faces.assign(out.flowing.begin(), out.flowing.end());
+    R.flowing_faces.assign(out.domain_faces.begin(), out.domain_faces.end());
     R.final_metrics = D::spherical_distortion(P.xyz, p, P.faces, density());
     R.final_share_error = share_error(P, p);
     const D::Orientation_count caller = D::count_orientations_sphere(p, P.faces);
     R.inverted_faces = caller.inverted;
     R.degenerate_faces = caller.degenerate;
-    const D::Orientation_count flowing = D::count_orientations_sphere(p, out.flowing);
+    const D::Orientation_count flowing = D::count_orientations_sphere(p, out.domain_faces);
     R.flowing_inverted_faces = flowing.inverted + flowing.degenerate;
     if(!flowing.all_positive()) // cannot happen: the start, every accepted step and every flip are certified
       return fail(ERROR_NO_1_TO_1_MAPPING, "the flow produced " + std::to_string(R.flowing_inverted_faces) +

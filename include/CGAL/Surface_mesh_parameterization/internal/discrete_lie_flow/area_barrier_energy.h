@@ -71,7 +71,7 @@ private:
   std::vector<double> m_c;
 };
 
-/// D_area with other face weights, for the spherical polish (sphere_flow.h):
+/// D_area with other face weights, for the spherical polish (sphere_certified_flow.h):
 /// E = Σ ω_t (r_t + 1/r_t) with r_t = (u_t/U)/a_t as above, a_t = A_t/Σ A,
 /// and ω_t ∝ (1 − β) a_t + β min(1/F, 100 a_t), Σ ω = 1. With α_t = ω_t/a_t
 /// and c_t = ω_t a_t, E = P/U + U K, P = Σ α_t u_t, K = Σ c_t/u_t (β = 0:

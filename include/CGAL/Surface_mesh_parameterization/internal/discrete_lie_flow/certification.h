@@ -8,7 +8,7 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_CERTIFICATION_H
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/critical_step.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/geometry.h>
 
 #include <array>
 #include <cstddef>
@@ -18,8 +18,6 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 namespace dlf {
-
-typedef std::array<int, 3> Face;
 
 /// Exact orientation of the planar triangle (a, b, c).
 inline CGAL::Orientation exact_orientation_2(const Vec2& a, const Vec2& b, const Vec2& c)

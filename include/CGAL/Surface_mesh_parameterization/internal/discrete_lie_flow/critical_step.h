@@ -7,6 +7,8 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_CRITICAL_STEP_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_CRITICAL_STEP_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/geometry.h>
+
 #include <array>
 #include <cmath>
 #include <limits>
@@ -15,11 +17,6 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 namespace dlf {
-
-typedef std::array<double, 2> Vec2;
-typedef std::array<double, 3> Vec3;
-
-inline constexpr double infinite_step() { return std::numeric_limits<double>::infinity(); }
 
 /// Smallest root λ > 0 of `a λ² + b λ + c`, or +∞ when there is none.
 /// Uses the cancellation-free pair `q = -(b + sign(b)·sqrt(Δ))/2`, roots
@@ -118,13 +115,6 @@ inline double critical_step_2(const Vec2& p0, const Vec2& p1, const Vec2& p2,
   const std::array<double, 3> q = doubled_area_quadratic(p0, p1, p2, d0, d1, d2);
   return smallest_positive_root(q[0], q[1], q[2]);
 }
-
-inline Vec3 cross(const Vec3& u, const Vec3& v)
-{
-  return {{ u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0] }};
-}
-inline double dot(const Vec3& u, const Vec3& v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; }
-inline Vec3 sub(const Vec3& u, const Vec3& v) { return {{ u[0] - v[0], u[1] - v[1], u[2] - v[2] }}; }
 
 /// Coefficients (a, b, c, d) of det[p0 + λ t0, p1 + λ t1, p2 + λ t2], the
 /// orientation of a spherical triangle seen from the centre. Written in the

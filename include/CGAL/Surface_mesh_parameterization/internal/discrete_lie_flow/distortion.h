@@ -3,7 +3,7 @@
 //
 // Distortion metrics of a piecewise-linear map from the input triangles to
 // domain triangles (planar, or flat triangles between sphere points), with
-// the definitions of DESIGN.md (the paper's Table 1, made precise).
+// the definitions of doc/design.md (the paper's Table 1, made precise).
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_DISTORTION_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_DISTORTION_H
@@ -35,14 +35,7 @@ struct Distortion_metrics
   std::size_t faces_below_1_degree = 0;
 };
 
-inline double norm3(const Vec3& v) { return std::sqrt(dot(v, v)); }
-
-/// Area and the three angles (radians) of a triangle in 3D.
-inline double triangle_area_3(const Vec3& a, const Vec3& b, const Vec3& c)
-{
-  return 0.5 * norm3(cross(sub(b, a), sub(c, a)));
-}
-
+/// The smallest angle (radians) of a triangle in 3D.
 inline double min_angle_3(const Vec3& a, const Vec3& b, const Vec3& c)
 {
   const Vec3* p[3] = { &a, &b, &c };

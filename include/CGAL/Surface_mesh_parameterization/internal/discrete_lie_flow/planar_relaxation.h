@@ -14,7 +14,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/area_barrier_energy.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certification.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_problem.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/vertex_relaxation.h>
 
 #include <cmath>
 #include <vector>

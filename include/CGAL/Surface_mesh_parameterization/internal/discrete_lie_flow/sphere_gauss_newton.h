@@ -64,7 +64,7 @@ struct Tangent_frames
 /// frames (2 unknowns per vertex, x of vertex i at 2i, 2i + 1), always in
 /// the same order: H = Σ_t (w_t g_t g_tᵀ + w'_t g'_t g'_tᵀ) with g_t, g'_t
 /// the tangential gradients of face t's flat and cone areas and w, w' the
-/// energy's curvatures in them (sphere_flow.h's polish energy), S the
+/// energy's curvatures in them (the polish energy of sphere_certified_flow.h), S the
 /// Sobolev metric `K` (n × n, one copy per coordinate) seen through the
 /// frames. Returns tr(H) / tr(S) in `ratio`; ε = `eps_relative` × ratio.
 template <class Add>

@@ -15,7 +15,9 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_SPHERE_INITIAL_MAP_H
 
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certification.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certified_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/area_barrier_energy.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/area_elements.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sparse_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_problem.h>
 
 #include <Eigen/Sparse>

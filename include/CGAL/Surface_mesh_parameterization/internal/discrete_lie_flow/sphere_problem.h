@@ -9,7 +9,8 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_SPHERE_PROBLEM_H
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_problem.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/area_elements.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/geometry.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/distortion.h>
 
 #include <algorithm>
@@ -143,12 +144,6 @@ inline Validation validate_sphere_geometry(Sphere_problem& P, const std::vector<
   return r;
 }
 
-inline Vec3 normalized(const Vec3& v)
-{
-  const double l = std::sqrt(dot(v, v));
-  return {{ v[0] / l, v[1] / l, v[2] / l }};
-}
-
 /// Signed area of the flat triangle between sphere points: half the length
 /// of N = (b − a) × (c − a), with the sign of a · N = det[a, b, c] (in the
 /// difference form, whose rounding error scales with the triangle).
@@ -200,7 +195,7 @@ inline void signed_areas_sphere(const std::vector<Vec3>& p, const std::vector<Fa
     out[f] = signed_area_sphere(p[std::size_t(faces[f][0])], p[std::size_t(faces[f][1])], p[std::size_t(faces[f][2])]);
 }
 
-/// D_area of the flat triangles between the sphere points (the metric of DESIGN.md).
+/// D_area of the flat triangles between the sphere points (the metric of doc/design.md).
 inline double flat_d_area(const std::vector<Vec3>& p, const std::vector<Face>& faces, const std::vector<double>& target)
 {
   std::vector<double> a;

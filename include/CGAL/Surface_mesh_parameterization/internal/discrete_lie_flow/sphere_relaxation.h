@@ -19,7 +19,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/area_barrier_energy.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certification.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_problem.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/vertex_relaxation.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_gauss_newton.h>
 
 #include <array>
@@ -50,7 +50,7 @@ inline std::vector<std::size_t> vertices_to_relax(const std::vector<Face>& faces
 }
 
 /// One sweep over the vertices `active` of the polish energy
-/// E(u) + κ E(w) (sphere_flow.h): u the flat areas, w the cone areas, E the
+/// E(u) + κ E(w) (sphere_certified_flow.h): u the flat areas, w the cone areas, E the
 /// weighted D_area `energy`. `u` and `w` must hold the areas of `p`; all
 /// three are updated.
 inline Relaxation_outcome relax_sphere_vertices(const std::vector<Face>& faces, const Vertex_faces& around,

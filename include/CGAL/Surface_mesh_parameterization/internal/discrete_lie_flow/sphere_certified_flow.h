@@ -1,0 +1,452 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The certified flow on the unit sphere as a policy of the flow driver: the
+// planar certified flow carried over to the flat triangles between sphere
+// points, in two phases.
+// - Opening: energy D_area on the cone areas ½ det[p0, p1, p2] (zero exactly
+//   where the orientation predicate is, so a barrier for it even on the huge
+//   faces of a start compressed by e^30); direction: the tangential Sobolev
+//   gradient, preconditioned by the cotangent stiffness of the current
+//   spherical mesh plus a small lumped mass term (x, y, z share one
+//   factorisation), L-BFGS-corrected once D_area < 3.
+// - Polish, once D_area < 2.05 or the opening stops paying (plateau, the
+//   flat D_area rising, or steps capped short by a few faces near
+//   inversion): energy E(flat areas) + κ E(cone areas), E the D_area with
+//   face weights half area, half uniform (Weighted_area_energy); direction:
+//   regularised Gauss–Newton (sphere_gauss_newton.h), then vertex sweeps
+//   (sphere_relaxation.h).
+// Step: μ times the smallest positive root of the per-face orientation cubics
+// det[p_k + λ d_k] (and at most 1 in the polish), points re-normalised,
+// Armijo backtracking, every accepted step certified by the exact
+// orientation of every face on the stored doubles. The measurements behind
+// each choice: doc/sphere.md.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_SPHERE_CERTIFIED_FLOW_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_SPHERE_CERTIFIED_FLOW_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/area_barrier_energy.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/area_elements.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certification.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/critical_step.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/density_levels.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow_driver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sparse_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_directions.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_gauss_newton.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_problem.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_relaxation.h>
+
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace dlf {
+
+/// Internal knobs of the spherical flow, with the measured defaults
+/// (doc/sphere.md, "Measurements behind the defaults", has the values that lost).
+struct Sphere_flow_settings
+{
+  /// Weight of the lumped mass term in the Sobolev metric, relative to the
+  /// stiffness (both of the current flat triangles). The l = 1 spherical
+  /// harmonics have Dirichlet/mass ratio 2, so 0.1 keeps the global
+  /// (Möbius-like) component of the gradient amplified but bounded.
+  double mass_weight = 0.1;
+  /// L-BFGS pairs kept on top of the Sobolev metric (K⁻¹ as the initial
+  /// inverse Hessian), used only once D_area < `lbfgs_below`: far from the
+  /// targets the barrier makes the curvature pairs misleading.
+  std::size_t lbfgs_memory = 3;
+  double lbfgs_below = 3;
+  /// The polish's energy is E(flat areas) + `cone_weight` × E(cone areas).
+  /// The flat areas are the metric's, but not a barrier: a triangle whose
+  /// plane passes through the centre (orientation zero) keeps a large flat
+  /// area. The cone area ½ det[p0, p1, p2] = flat area × plane distance h is
+  /// one, so the sum is.
+  double cone_weight = 0.03;
+  /// Share of uniform weights 1/F in the polish energy's face weights (the
+  /// rest area weights): D_area weighs faces by area, the mean |log area
+  /// ratio| goal counts each face once.
+  double uniform_weight = 0.5;
+  /// D_area below which the direction is the regularised Gauss–Newton one
+  /// (sphere_gauss_newton.h) instead of the Sobolev/L-BFGS one.
+  double newton_below = 2.05;
+  /// The opening crawls when a few faces near inversion cap every step
+  /// (λ = μ λ_crit) while D_area is already low; the polish's vertex sweeps
+  /// move exactly those faces. After three accepted opening steps shorter
+  /// than `crawl_step` with D_area below `crawl_below`, polish.
+  double crawl_step = 0.01;
+  double crawl_below = 2.1;
+  /// The polish's direction: Gauss–Newton (else the opening's Sobolev/L-BFGS one).
+  bool polish_gauss_newton = true;
+  /// Initial ε of the Levenberg–Marquardt regularisation, relative to tr(H)/tr(S).
+  double newton_regularization = 1e-2;
+  /// Vertex-by-vertex relaxation sweeps after each polish step (sphere_relaxation.h).
+  std::size_t relaxation_sweeps = 10;
+  /// Sweeps visit the corners of the faces with |log area ratio| above this (0: every vertex).
+  double relaxation_threshold = 0;
+};
+
+/// The certified spherical flow as a policy of `run_flow()` (flow_driver.h),
+/// from the positively oriented unit vectors `p` (moved in place; always
+/// certified and not worse than the start).
+template <class EigenSolver>
+class Sphere_certified_flow
+{
+public:
+  Sphere_certified_flow(const Sphere_problem& P, std::vector<Vec3>& p, const Discrete_lie_flow_options& opt,
+                        EigenSolver& eigen_solver, const Sphere_flow_settings& settings)
+    : m_P(P), m_p(p), m_opt(opt), m_settings(settings), m_n(p.size()), m_energy(P.target),
+      m_polish_energy(P.target, settings.uniform_weight), m_kappa(settings.cone_weight), m_solver(eigen_solver),
+      m_newton_solver(m_newton_eigen_solver), m_eps(settings.newton_regularization), m_around(0, std::vector<Face>()),
+      m_d(p.size()), m_trial(p.size()), m_levels(P.xyz, P.faces, P.target), m_stopping(stopping_rules(opt))
+  {}
+
+  bool start(Flow_outcome& out)
+  {
+    m_E = evaluate(m_p, m_u, m_w);
+    m_D = flat_d_area(m_p, m_P.faces, m_P.target);
+    out.initial_d_area = out.final_d_area = m_D;
+    m_stopping.restart(m_E);
+    return std::isfinite(m_E);
+  }
+
+  bool converged()
+  {
+    if(!(m_D - 2 <= m_opt.tolerance)) return false;
+    if(m_opt.log_area_tolerance > 0 && !(flat_mean_abs_log_ratio(m_p, m_P.faces, m_P.target) <= m_opt.log_area_tolerance))
+      return false;
+    if(!(m_opt.share_tolerance > 0) || m_levels.uniform()) return true;
+    signed_areas_sphere(m_p, m_P.faces, m_flat);
+    return m_levels.error(m_flat) <= m_opt.share_tolerance;
+  }
+
+  /// d = −P H g, P the tangent projection, H = K⁻¹ (the Sobolev gradient)
+  /// far from the targets, L-BFGS-corrected K⁻¹ once D_area < lbfgs_below,
+  /// the Gauss–Newton inverse in the polish.
+  Direction_status direction(Flow_outcome& out)
+  {
+    if(!m_polish && (m_force_polish || m_D < m_settings.newton_below)) {
+      m_polish = true;
+      m_E = evaluate(m_p, m_u, m_w);
+      m_stopping.restart(m_E);
+      m_lambda_prev = infinite_step();
+    }
+    gradient();
+    const Sparse_matrix* K;
+    {
+      Scoped_timer timer(out.seconds_assembly);
+      K = &m_sobolev.assemble(m_n, [&](auto&& add) {
+        sphere_sobolev_contributions(m_p, m_P.faces, m_settings.mass_weight, add);
+      });
+    }
+    ++out.factorizations;
+    m_newton = m_polish && m_settings.polish_gauss_newton; // factorises its own matrix instead of K
+    if(m_newton) newton_direction(*K, out);
+    else sobolev_direction(*K, out);
+    m_slope = 0;
+    double gg = 0;
+    for(std::size_t v = 0; v < m_n; ++v) { m_slope += dot(m_g[v], m_d[v]); gg += dot(m_g[v], m_g[v]); }
+    if(!(m_slope < 0)) {
+      for(std::size_t v = 0; v < m_n; ++v) m_d[v] = {{ -m_g[v][0], -m_g[v][1], -m_g[v][2] }};
+      m_slope = -gg;
+      clear_pairs();
+    }
+    return m_slope < 0 ? Direction_status::DESCENT : Direction_status::NO_DESCENT;
+  }
+
+  void bound(Flow_step& step)
+  {
+    const std::vector<Face>& F = m_P.faces;
+    step.critical = smallest_critical_step(F.size(), [&](std::size_t f, double best) {
+      const std::size_t a = std::size_t(F[f][0]), b = std::size_t(F[f][1]), c = std::size_t(F[f][2]);
+      const std::array<double, 4> k = orientation_cubic(m_p[a], m_p[b], m_p[c], m_d[a], m_d[b], m_d[c]);
+      // Most faces cannot invert before the smallest root found so far: the
+      // cubic stays above k3 − (|k2| + (|k1| + |k0| λ) λ) λ > 0 on [0, λ]
+      // (a margin far above the rounding of these positive terms).
+      if(((std::abs(k[0]) * best + std::abs(k[1])) * best + std::abs(k[2])) * best < (1 - 1e-9) * k[3])
+        return infinite_step();
+      return smallest_positive_root(k[0], k[1], k[2], k[3]);
+    }, step.limiting);
+    step.lambda = m_opt.fixed_step > 0 ? m_opt.fixed_step
+                                       : (std::min)(m_newton ? 1. : 4 * m_lambda_prev, step_fraction(m_opt) * step.critical);
+    if(!std::isfinite(step.lambda)) step.lambda = 1;
+  }
+
+  /// Armijo backtracking; the exact predicate has the last word. The slope
+  /// is that of the linear move; re-normalisation only changes it at second order.
+  void search(Flow_step& step, Flow_outcome& out)
+  {
+    for(; step.halvings <= m_opt.max_backtracks; ++step.halvings, step.lambda *= 0.5) {
+      for(std::size_t v = 0; v < m_n; ++v)
+        m_trial[v] = normalized(Vec3{{ m_p[v][0] + step.lambda * m_d[v][0], m_p[v][1] + step.lambda * m_d[v][1],
+                                       m_p[v][2] + step.lambda * m_d[v][2] }});
+      m_E_trial = evaluate(m_trial, m_u_trial, m_w_trial);
+      if(!(m_E_trial <= m_E + 1e-4 * step.lambda * m_slope)) continue;
+      if(!count_orientations_sphere(m_trial, m_P.faces, true).all_positive()) { ++out.rejected_by_exact_check; continue; }
+      step.accepted = true;
+      return;
+    }
+  }
+
+  void commit(const Flow_step& step, Flow_outcome& out)
+  {
+    // Levenberg–Marquardt: trust the model more after a full step, less after halvings.
+    if(m_newton) m_eps = step.halvings == 0 ? (std::max)(m_eps / 4, 1e-8)
+                                            : (step.halvings >= 2 ? (std::min)(m_eps * 4, 1e4) : m_eps);
+    m_p_prev = m_p;
+    m_g_prev = m_g;
+    m_p.swap(m_trial);
+    m_u.swap(m_u_trial);
+    m_w.swap(m_w_trial);
+    m_E = m_E_trial;
+    if(m_polish && m_settings.relaxation_sweeps > 0) relax(out);
+    m_D = flat_d_area(m_p, m_P.faces, m_P.target);
+    m_lambda_prev = step.lambda;
+    out.final_d_area = m_D;
+    if(!m_polish) {
+      // The cone areas differ from the flat ones on coarse meshes: once the
+      // flat D_area keeps rising under the cone energy, or a few faces near
+      // inversion cap every step, polish instead.
+      m_rising = m_D > m_best_cone_D ? m_rising + 1 : 0;
+      m_best_cone_D = (std::min)(m_best_cone_D, m_D);
+      m_crawling = (m_D < m_settings.crawl_below && step.lambda < m_settings.crawl_step) ? m_crawling + 1 : 0;
+      if(m_rising >= 3 || m_crawling >= 3) m_force_polish = true;
+    }
+    // In the polish the mean |log r| may still fall while E hardly moves: a
+    // plateau is when neither moves.
+    if(m_polish && m_opt.log_area_tolerance > 0) m_mean_history.push_back(flat_mean_abs_log_ratio(m_p, m_P.faces, m_P.target));
+  }
+
+  double d_area() const { return m_D; }
+  double progress() const { return m_E; }
+  double residual() const
+  {
+    std::vector<double> flat;
+    signed_areas_sphere(m_p, m_P.faces, flat);
+    return area_residual(m_n, m_P.faces, flat, m_P.target);
+  }
+  Flow_stopping& stopping() { return m_stopping; }
+
+  /// A plateau of the opening ends the opening: polish from here.
+  bool on_plateau()
+  {
+    if(!m_polish) { m_force_polish = true; return false; }
+    const std::size_t w = m_opt.plateau_window;
+    const bool mean_moves = m_mean_history.size() > w &&
+                            m_mean_history[m_mean_history.size() - 1 - w] - m_mean_history.back() > 1e-3 * m_mean_history.back();
+    return !mean_moves;
+  }
+
+  void finish(Flow_outcome& out)
+  {
+    out.symbolic_analyses = m_solver.analyses() + m_newton_solver.analyses();
+    out.final_residual = residual();
+    out.domain_faces = m_P.faces;
+    out.domain_target = m_P.target;
+  }
+
+private:
+  static Flow_stopping::Rules stopping_rules(const Discrete_lie_flow_options& opt)
+  {
+    Flow_stopping::Rules r;
+    r.plateau_window = opt.plateau_window;
+    r.plateau_tolerance = opt.plateau_tolerance;
+    r.stall = Flow_stopping::HARD_STEPS;
+    r.stall_window = opt.stall_window;
+    return r;
+  }
+
+  /// The phase's energy at `x`: D_area of the cone areas `a` in the opening;
+  /// the polish energy of the flat areas `a` and the cone areas `b` after.
+  double evaluate(const std::vector<Vec3>& x, std::vector<double>& a, std::vector<double>& b) const
+  {
+    if(!m_polish) {
+      cone_areas_sphere(x, m_P.faces, a);
+      return m_energy.value(a);
+    }
+    signed_areas_sphere(x, m_P.faces, a);
+    cone_areas_sphere(x, m_P.faces, b);
+    return m_polish_energy.value(a) + m_kappa * m_polish_energy.value(b);
+  }
+
+  /// The tangential gradient of the phase's energy.
+  void gradient()
+  {
+    if(m_polish) {
+      m_polish_energy.derivatives(m_u, m_dE);
+      m_polish_energy.derivatives(m_w, m_dE_cone);
+      for(double& x : m_dE_cone) x *= m_kappa;
+      polish_position_gradient(m_p, m_P.faces, m_dE, m_dE_cone, m_g);
+    } else {
+      m_energy.derivatives(m_u, m_dE);
+      cone_position_gradient(m_p, m_P.faces, m_dE, m_g);
+    }
+    project_to_tangent(m_p, m_g);
+  }
+
+  void clear_pairs() { m_pairs_s.clear(); m_pairs_y.clear(); m_rho.clear(); }
+
+  void newton_direction(const Sparse_matrix& K, Flow_outcome& out)
+  {
+    clear_pairs();
+    const Tangent_frames T(m_p);
+    m_polish_energy.curvatures(m_u, m_curvature);
+    m_polish_energy.curvatures(m_w, m_curvature_cone);
+    for(double& x : m_curvature_cone) x *= m_kappa;
+    Eigen::VectorXd b(Eigen::Index(2 * m_n)), x;
+    for(std::size_t v = 0; v < m_n; ++v) {
+      const std::array<double, 2> c = T.coordinates(v, m_g[v]);
+      b[Eigen::Index(2 * v)] = -c[0];
+      b[Eigen::Index(2 * v + 1)] = -c[1];
+    }
+    // A factorisation that fails (H is only semidefinite: rotations change
+    // no area) is retried with a larger ε, as in the plane.
+    bool solved = false;
+    for(int attempt = 0; attempt < 6 && !solved; ++attempt) {
+      double ratio = 1;
+      const Sparse_matrix* A;
+      {
+        Scoped_timer timer(out.seconds_assembly);
+        A = &m_newton_matrix.assemble(2 * m_n, [&](auto&& add) {
+          sphere_gauss_newton_contributions(m_p, m_P.faces, m_curvature, m_curvature_cone, T, K, m_eps, ratio, add);
+        });
+      }
+      Scoped_timer timer(out.seconds_solve);
+      solved = m_newton_solver.factorize(*A) && m_newton_solver.solve(b, x);
+      if(!solved) m_eps *= 10;
+    }
+    if(solved) for(std::size_t v = 0; v < m_n; ++v) m_d[v] = T.vector(v, x[Eigen::Index(2 * v)], x[Eigen::Index(2 * v + 1)]);
+    else { out.solver_failed = true; for(std::size_t v = 0; v < m_n; ++v) m_d[v] = {{ -m_g[v][0], -m_g[v][1], -m_g[v][2] }}; }
+  }
+
+  /// Curvature pairs of the last accepted steps: L-BFGS on top of the
+  /// Sobolev metric (K⁻¹ is the initial inverse Hessian of the two-loop recursion).
+  void update_pairs()
+  {
+    if(m_D > m_settings.lbfgs_below) { clear_pairs(); return; }
+    if(m_p_prev.empty()) return;
+    std::vector<Vec3> s_k(m_n), y_k(m_n);
+    double sy = 0;
+    for(std::size_t v = 0; v < m_n; ++v) {
+      s_k[v] = sub(m_p[v], m_p_prev[v]);
+      y_k[v] = sub(m_g[v], m_g_prev[v]);
+      sy += dot(s_k[v], y_k[v]);
+    }
+    if(!(sy > 0) || m_settings.lbfgs_memory == 0) return;
+    m_pairs_s.push_back(std::move(s_k));
+    m_pairs_y.push_back(std::move(y_k));
+    m_rho.push_back(1 / sy);
+    if(m_pairs_s.size() > m_settings.lbfgs_memory) {
+      m_pairs_s.erase(m_pairs_s.begin());
+      m_pairs_y.erase(m_pairs_y.begin());
+      m_rho.erase(m_rho.begin());
+    }
+  }
+
+  void sobolev_direction(const Sparse_matrix& K, Flow_outcome& out)
+  {
+    update_pairs();
+    std::vector<Vec3> q = m_g;
+    std::vector<double> alpha(m_pairs_s.size());
+    for(std::size_t i = m_pairs_s.size(); i-- > 0;) {
+      double a = 0;
+      for(std::size_t v = 0; v < m_n; ++v) a += dot(m_pairs_s[i][v], q[v]);
+      alpha[i] = a * m_rho[i];
+      for(std::size_t v = 0; v < m_n; ++v) for(int j = 0; j < 3; ++j) q[v][j] -= alpha[i] * m_pairs_y[i][v][j];
+    }
+    {
+      Scoped_timer timer(out.seconds_solve);
+      bool solved = m_solver.factorize(K);
+      if(solved) {
+        // x, y and z in one solve: one pass over the factor for the three.
+        Eigen::MatrixXd b(Eigen::Index(m_n), 3), x;
+        for(std::size_t v = 0; v < m_n; ++v)
+          for(int c = 0; c < 3; ++c) b(Eigen::Index(v), c) = q[v][std::size_t(c)];
+        solved = m_solver.solve(b, x);
+        if(solved)
+          for(std::size_t v = 0; v < m_n; ++v)
+            for(int c = 0; c < 3; ++c) m_d[v][std::size_t(c)] = x(Eigen::Index(v), c);
+      }
+      if(!solved) {
+        out.solver_failed = true;
+        m_d = q;
+      }
+    }
+    for(std::size_t i = 0; i < m_pairs_s.size(); ++i) {
+      double b = 0;
+      for(std::size_t v = 0; v < m_n; ++v) b += dot(m_pairs_y[i][v], m_d[v]);
+      b *= m_rho[i];
+      for(std::size_t v = 0; v < m_n; ++v) for(int j = 0; j < 3; ++j) m_d[v][j] += (alpha[i] - b) * m_pairs_s[i][v][j];
+    }
+    for(Vec3& x : m_d) x = {{ -x[0], -x[1], -x[2] }};
+    project_to_tangent(m_p, m_d);
+  }
+
+  /// The global step moved the smooth modes; sweeps take the grid-scale ones.
+  void relax(Flow_outcome& out)
+  {
+    if(m_around.first.size() != m_n + 1) m_around = Vertex_faces(m_n, m_P.faces);
+    const std::vector<std::size_t> active =
+      vertices_to_relax(m_P.faces, m_polish_energy, m_u, m_n, m_settings.relaxation_threshold);
+    const double mu = step_fraction(m_opt);
+    for(std::size_t k = 0; k < m_settings.relaxation_sweeps && !active.empty(); ++k) {
+      const Relaxation_outcome r = relax_sphere_vertices(m_P.faces, m_around, m_polish_energy, m_kappa, mu, active, m_p, m_u, m_w);
+      out.rejected_by_exact_check += r.refused_by_exact_check;
+    }
+    m_E = evaluate(m_p, m_u, m_w); // drop the sweeps' incremental rounding
+  }
+
+  const Sphere_problem& m_P;
+  std::vector<Vec3>& m_p;
+  const Discrete_lie_flow_options& m_opt;
+  const Sphere_flow_settings m_settings;
+  const std::size_t m_n;
+  Area_barrier_energy m_energy;
+  const Weighted_area_energy m_polish_energy;
+  const double m_kappa;
+  Pattern_reusing_solver<EigenSolver> m_solver;
+  EigenSolver m_newton_eigen_solver; // its own symbolic analysis: 2n unknowns
+  Pattern_reusing_solver<EigenSolver> m_newton_solver;
+  Fixed_pattern_matrix m_sobolev, m_newton_matrix;
+  double m_eps;
+  std::vector<double> m_curvature, m_curvature_cone;
+  Vertex_faces m_around;
+  // u: the energy's areas (cone areas in the opening, flat ones in the
+  // polish); w: the cone areas of the polish.
+  std::vector<double> m_u, m_w, m_dE, m_dE_cone, m_u_trial, m_w_trial, m_rho, m_flat;
+  std::vector<Vec3> m_p_prev, m_g_prev;
+  std::vector<std::vector<Vec3> > m_pairs_s, m_pairs_y;
+  std::vector<Vec3> m_g, m_d, m_trial;
+  bool m_polish = false, m_force_polish = false, m_newton = false;
+  double m_best_cone_D = infinite_step();
+  std::size_t m_rising = 0, m_crawling = 0;
+  double m_E = 0, m_E_trial = 0, m_D = 0, m_slope = 0;
+  double m_lambda_prev = infinite_step();
+  std::vector<double> m_mean_history;
+  const Density_levels m_levels;
+  Flow_stopping m_stopping;
+};
+
+/// Runs the certified spherical flow from the positively oriented unit
+/// vectors `p` (modified in place; always certified and not worse than the start).
+template <class EigenSolver>
+Flow_outcome certified_sphere_flow(const Sphere_problem& P, std::vector<Vec3>& p,
+                                   const Discrete_lie_flow_options& opt, EigenSolver& eigen_solver,
+                                   const Sphere_flow_settings& settings = Sphere_flow_settings())
+{
+  Sphere_certified_flow<EigenSolver> flow(P, p, opt, eigen_solver, settings);
+  return run_flow(flow, opt);
+}
+
+} // namespace dlf
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
