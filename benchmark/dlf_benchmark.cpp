@@ -8,7 +8,7 @@
 // Every method goes through CGAL::Surface_mesh_parameterization::parameterize()
 // and is timed on that call alone (median of --repeats runs on fresh copies
 // below --repeat-below faces, one run above). Every uv map is scored by the
-// same function, internal::dlf::planar_distortion (doc/design.md, "Metrics"), on
+// same function, discrete_lie_flow_distortion() (doc/design.md, "Metrics"), on
 // the caller's triangles; the paper mode is scored on its flowing
 // triangulation as well (report().domain_faces).
 //
@@ -27,7 +27,7 @@
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Symmetric_barycentric_mapping_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/square_border_corners.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/distortion.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_distortion.h>
 
 #include <CGAL/Surface_mesh_parameterization/ARAP_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Barycentric_mapping_parameterizer_3.h>
@@ -304,7 +304,7 @@ static Run run_timed(int method, const Mesh_case& c, const SMP::Discrete_lie_flo
   return std::move(runs[order[order.size() / 2]]);
 }
 
-static json metrics_json(const D::Distortion_metrics& d, std::size_t F)
+static json metrics_json(const SMP::Discrete_lie_flow_distortion& d, std::size_t F)
 {
   json j;
   j["d_area"] = d.d_area;
@@ -315,7 +315,7 @@ static json metrics_json(const D::Distortion_metrics& d, std::size_t F)
   j["log_area_max_abs"] = d.log_area_max_abs;
   j["inverted_faces"] = d.inverted_faces;
   j["degenerate_faces"] = d.degenerate_faces;
-  j["folds"] = d.inverted_faces + d.degenerate_faces;
+  j["folds"] = d.caller_inverted_faces;
   j["min_angle_degrees"] = d.min_angle_degrees;
   j["faces_below_1_degree"] = d.faces_below_1_degree;
   return j;
@@ -351,10 +351,10 @@ static json run_method(int method, const Mesh_case& c, const SMP::Discrete_lie_f
     j["rejected_by_exact_check"] = R.rejected_by_exact_check;
   }
   if(r.status != SMP::OK) return j;
-  j["caller"] = metrics_json(D::planar_distortion(c.xyz, r.uv, c.faces), c.faces.size());
+  j["caller"] = metrics_json(SMP::discrete_lie_flow_distortion(c.xyz, r.uv, c.faces), c.faces.size());
   if(r.has_report && is_paper(method)) {
     std::vector<D::Face> dom(r.report.domain_faces.begin(), r.report.domain_faces.end());
-    j["flowing"] = metrics_json(D::planar_distortion(c.xyz, r.uv, dom), dom.size());
+    j["flowing"] = metrics_json(SMP::discrete_lie_flow_distortion(c.xyz, r.uv, dom), dom.size());
     // The metric counts a face as degenerate when its domain triangle or its
     // 3D triangle has zero area; on the flowing triangulation a flip can join
     // three collinear 3D vertices (e.g. along a straight border), which is no

@@ -28,7 +28,7 @@
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_sphere_3.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/distortion.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_distortion.h>
 
 #include <boost/program_options.hpp>
 #include <nlohmann/json.hpp>
@@ -130,7 +130,7 @@ static bool load_mesh(const std::string& spec, const fs::path& dir, SM& mesh, st
 // One run
 // ---------------------------------------------------------------------------
 
-static json metrics_json(const D::Distortion_metrics& d)
+static json metrics_json(const SMP::Discrete_lie_flow_distortion& d)
 {
   json j;
   j["d_area"] = d.d_area;
@@ -168,7 +168,7 @@ static json run_sphere(const SM& mesh)
   }
   j["seconds"] = seconds_since(t0);
   j["cpu_seconds"] = cpu_now() - c0;
-  const SMP::Discrete_lie_flow_sphere_report& R = dlf.report();
+  const SMP::Discrete_lie_flow_report& R = dlf.report();
   j["status"] = SMP::discrete_lie_flow_error_name(status);
   j["message"] = R.message;
   j["seconds_initial"] = R.seconds_initial;
@@ -187,8 +187,7 @@ static json run_sphere(const SM& mesh)
   j["report_initial_d_area"] = R.initial_d_area;
   j["report_final_d_area"] = R.final_d_area;
   j["report_final_residual"] = R.final_residual;
-  j["report_inverted_faces"] = R.inverted_faces;
-  j["report_degenerate_faces"] = R.degenerate_faces;
+  j["report_inverted_faces"] = R.caller_inverted_faces;
   if(status != SMP::OK) return j;
   j["initial"] = metrics_json(R.initial_metrics);
   j["final"] = metrics_json(R.final_metrics);

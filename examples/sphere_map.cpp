@@ -41,7 +41,7 @@ int main(int argc, char** argv)
   // Defaults: certified initial map, certified flow to D_area ≤ 2.01.
   SMP::Discrete_lie_flow_options options;
   if(argc > 2) options.max_iterations = std::size_t(std::atol(argv[2]));
-  const SMP::Discrete_lie_flow_sphere_report report = SMP::discrete_lie_flow_sphere(sm, sphere, options);
+  const SMP::Discrete_lie_flow_report report = SMP::discrete_lie_flow_sphere(sm, sphere, options);
 
   std::cout << filename << ": " << report.vertices << " vertices, " << report.faces << " faces\n"
             << "status: " << SMP::discrete_lie_flow_error_name(report.status) << " (" << report.message << ")\n";
@@ -53,6 +53,6 @@ int main(int argc, char** argv)
             << ", d_area " << report.final_d_area << ", mean/max |log area ratio| "
             << report.final_metrics.log_area_mean_abs << " / " << report.final_metrics.log_area_max_abs
             << " (" << report.seconds_flow << " s)\n"
-            << "inverted faces: " << report.inverted_faces << ", degenerate faces: " << report.degenerate_faces << std::endl;
+            << "inverted or degenerate faces: " << report.caller_inverted_faces << std::endl;
   return EXIT_SUCCESS;
 }

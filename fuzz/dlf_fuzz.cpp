@@ -87,7 +87,7 @@ void run_disk(const Indexed_mesh& mesh, SMP::Discrete_lie_flow_mode mode)
   options.max_iterations = flow_iterations;
   Parameterizer parameterizer(Parameterizer::Initial_parameterizer(), options);
   const SMP::Error_code code = parameterizer.parameterize(sm, bhd, uvmap, vimap, vpmap);
-  const SMP::Discrete_lie_flow_report& R = parameterizer.report();
+  const SMP::Discrete_lie_flow_report& R = report;
   if(!known_status(code) || R.status != code) violation("disk: unknown or inconsistent status");
   if(code != SMP::OK) {
     if(R.message.empty()) violation("disk: error without a message");
@@ -116,13 +116,14 @@ void run_sphere(const Indexed_mesh& mesh)
 {
   SMP::Discrete_lie_flow_options options;
   options.max_iterations = flow_iterations;
-  SMP::Discrete_lie_flow_sphere_parameterizer_3<Surface_mesh> parameterizer(options);
+  D::Default_spd_solver solver;
+  SMP::Discrete_lie_flow_report report;
   D::Sphere_problem P;
   P.xyz = mesh.xyz;
   P.faces.assign(mesh.faces.begin(), mesh.faces.end());
   std::vector<D::Vec3> points;
-  const SMP::Error_code code = parameterizer.run(P, points);
-  const SMP::Discrete_lie_flow_sphere_report& R = parameterizer.report();
+  const SMP::Error_code code = D::map_to_sphere(P, points, options, solver, report);
+  const SMP::Discrete_lie_flow_report& R = report;
   if(!known_status(code) || R.status != code) violation("sphere: unknown or inconsistent status");
   if(code != SMP::OK) {
     if(R.message.empty()) violation("sphere: error without a message");

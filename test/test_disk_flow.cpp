@@ -24,6 +24,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -403,10 +404,15 @@ void expect_report_totals(const Flow_run& r, const std::vector<Tri>& dom)
   ASSERT_EQ(r.report.target_area.size(), n);
   std::vector<long double> u(dom.size()), a(dom.size());
   long double U = 0, A = 0;
+  // A face that flips create gets the area of its 3D triangle as target,
+  // held above a thousandth of the smallest input face (a flat 3D triangle
+  // would otherwise get a zero target); input faces are never below that.
+  long double min_input = std::numeric_limits<long double>::infinity();
+  for(const Tri& t : r.mesh.faces) min_input = (std::min)(min_input, area_3(r.mesh.xyz[t[0]], r.mesh.xyz[t[1]], r.mesh.xyz[t[2]]));
   for(std::size_t f = 0; f < dom.size(); ++f) {
     const Tri& t = dom[f];
     u[f] = std::fabs(area_2(r.uv[t[0]], r.uv[t[1]], r.uv[t[2]]));
-    a[f] = area_3(r.mesh.xyz[t[0]], r.mesh.xyz[t[1]], r.mesh.xyz[t[2]]);
+    a[f] = (std::max)(area_3(r.mesh.xyz[t[0]], r.mesh.xyz[t[1]], r.mesh.xyz[t[2]]), 1e-3L * min_input);
     U += u[f]; A += a[f];
   }
   const std::vector<long double> lu = lumped(n, dom, u), la = lumped(n, dom, a);

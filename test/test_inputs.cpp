@@ -598,14 +598,16 @@ TEST(Errors, InitialMapFolded_RunFlow)
     const std::vector<D::Vec2> before = uv;
     const D::Orientation_count oc = D::count_orientations_2(uv, P.faces);
     ASSERT_FALSE(oc.all_positive());
-    SM_dlf p;
-    EXPECT_EQ(p.run_flow(P, uv), SMP::ERROR_INITIAL_MAP_FOLDED);
-    EXPECT_EQ(p.report().status, SMP::ERROR_INITIAL_MAP_FOLDED);
+    const SMP::Discrete_lie_flow_options options;
+    D::Default_spd_solver solver;
+    SMP::Discrete_lie_flow_report report;
+    EXPECT_EQ(D::flow_disk(P, uv, options, solver, report), SMP::ERROR_INITIAL_MAP_FOLDED);
+    EXPECT_EQ(report.status, SMP::ERROR_INITIAL_MAP_FOLDED);
     EXPECT_TRUE(uv == before) << "the map was changed on error";
     // The message names the first bad face by index and vertices; check it is bad.
     const std::regex re("face ([0-9]+) \\(vertices ([0-9]+), ([0-9]+), ([0-9]+)\\)");
     std::smatch mm;
-    const std::string msg = p.report().message;
+    const std::string msg = report.message;
     ASSERT_TRUE(std::regex_search(msg, mm, re)) << msg;
     const std::size_t f = std::stoul(mm[1].str());
     ASSERT_LT(f, P.faces.size());
@@ -629,14 +631,16 @@ TEST(Run_flow, MirroredInitialMapIsAccepted)
   for(D::Vec2& q : uv) q[0] = -q[0]; // every face negative
   ASSERT_EQ(D::count_orientations_2(uv, P.faces).inverted, P.faces.size());
   const std::vector<D::Face> caller = P.faces;
-  SM_dlf p;
-  ASSERT_EQ(p.run_flow(P, uv), SMP::OK) << p.report().message;
+  const SMP::Discrete_lie_flow_options options;
+  D::Default_spd_solver solver;
+  SMP::Discrete_lie_flow_report report;
+  ASSERT_EQ(D::flow_disk(P, uv, options, solver, report), SMP::OK) << report.message;
   const Signs s = exact_signs(uv, std::vector<Tri>(caller.begin(), caller.end()));
   EXPECT_EQ(s.pos, 0u);
   EXPECT_EQ(s.zero, 0u);
   EXPECT_EQ(s.neg, caller.size());
-  EXPECT_EQ(p.report().caller_inverted_faces, 0u);
-  EXPECT_LE(p.report().final_d_area, p.report().initial_d_area);
+  EXPECT_EQ(report.caller_inverted_faces, 0u);
+  EXPECT_LE(report.final_d_area, report.initial_d_area);
 }
 
 TEST(Errors, FlowStalled)

@@ -114,12 +114,12 @@ std::pair<double, double> sphere_d_area(const std::vector<V3>& xyz, const std::v
 }
 
 /// Runs the public entry point on `sm`; returns the report and the sphere points (vertex order).
-SMP::Discrete_lie_flow_sphere_report map_to_sphere(const SM& sm, std::vector<V3>& p,
+SMP::Discrete_lie_flow_report map_to_sphere(const SM& sm, std::vector<V3>& p,
                                                    const SMP::Discrete_lie_flow_options& options = SMP::Discrete_lie_flow_options())
 {
   SM copy = sm;
   SM::Property_map<SM_vertex, K::Point_3> sphere = copy.add_property_map<SM_vertex, K::Point_3>("v:sphere", K::Point_3(7, 7, 7)).first;
-  const SMP::Discrete_lie_flow_sphere_report r = SMP::discrete_lie_flow_sphere(copy, sphere, options);
+  const SMP::Discrete_lie_flow_report r = SMP::discrete_lie_flow_sphere(copy, sphere, options);
   p.clear();
   for(SM_vertex v : vertices(copy)) p.push_back({{ sphere[v].x(), sphere[v].y(), sphere[v].z() }});
   return r;
@@ -134,7 +134,7 @@ void expect_refused(const std::string& name, int code, const std::string& words)
   SCOPED_TRACE(name);
   const SM sm = read_sphere_mesh(name);
   std::vector<V3> p;
-  const SMP::Discrete_lie_flow_sphere_report r = map_to_sphere(sm, p);
+  const SMP::Discrete_lie_flow_report r = map_to_sphere(sm, p);
   EXPECT_EQ(int(r.status), code) << r.message;
   EXPECT_NE(r.message.find(words), std::string::npos) << r.message;
   EXPECT_EQ(r.stop_reason, SMP::Discrete_lie_flow_stop_reason::NOT_RUN);
@@ -162,7 +162,7 @@ TEST(Sphere_validation, SeveralComponentsAreRefused)
   for(SM_vertex v : vertices(other)) other.point(v) = other.point(v) + K::Vector_3(5, 0, 0);
   sm.join(other);
   std::vector<V3> p;
-  const SMP::Discrete_lie_flow_sphere_report r = map_to_sphere(sm, p);
+  const SMP::Discrete_lie_flow_report r = map_to_sphere(sm, p);
   EXPECT_EQ(int(r.status), int(SMP::ERROR_NOT_GENUS_0));
   EXPECT_NE(r.message.find("2 components"), std::string::npos) << r.message;
   EXPECT_NE(r.message.find("Euler characteristic 4"), std::string::npos) << r.message;
@@ -183,7 +183,7 @@ TEST(Sphere_validation, ZeroAreaFaceIsNamed)
   const K::Point_3 a = sm.point(SM_vertex(SM::size_type(t[0]))), b = sm.point(SM_vertex(SM::size_type(t[1])));
   sm.point(SM_vertex(SM::size_type(t[2]))) = CGAL::midpoint(a, b);
   std::vector<V3> p;
-  const SMP::Discrete_lie_flow_sphere_report r = map_to_sphere(sm, p);
+  const SMP::Discrete_lie_flow_report r = map_to_sphere(sm, p);
   EXPECT_EQ(int(r.status), int(SMP::ERROR_DEGENERATE_INPUT));
   EXPECT_NE(r.message.find("zero area"), std::string::npos) << r.message;
   EXPECT_NE(r.message.find("face "), std::string::npos) << r.message;
@@ -194,7 +194,7 @@ TEST(Sphere_validation, NonFiniteVertexIsNamed)
   SM sm = read_sphere_mesh("sphere");
   sm.point(SM_vertex(17)) = K::Point_3(std::numeric_limits<double>::quiet_NaN(), 0, 0);
   std::vector<V3> p;
-  const SMP::Discrete_lie_flow_sphere_report r = map_to_sphere(sm, p);
+  const SMP::Discrete_lie_flow_report r = map_to_sphere(sm, p);
   EXPECT_EQ(int(r.status), int(SMP::ERROR_DEGENERATE_INPUT));
   EXPECT_NE(r.message.find("vertex 17"), std::string::npos) << r.message;
   for(const V3& q : p) EXPECT_EQ(q[0], 7.);
@@ -209,7 +209,7 @@ TEST(Sphere_validation, DensityAndModeAreChecked)
   EXPECT_EQ(int(map_to_sphere(sm, p, o).status), int(SMP::ERROR_INVALID_DENSITY));
   o.face_density.assign(num_faces(sm), 1.);
   o.face_density[5] = -1;
-  SMP::Discrete_lie_flow_sphere_report r = map_to_sphere(sm, p, o);
+  SMP::Discrete_lie_flow_report r = map_to_sphere(sm, p, o);
   EXPECT_EQ(int(r.status), int(SMP::ERROR_INVALID_DENSITY));
   EXPECT_NE(r.message.find("face 5"), std::string::npos) << r.message;
   // The paper mode validates the same way.
@@ -573,7 +573,7 @@ void check_sphere_map(const Sphere_case& c, const SM& sm)
   const Index_mesh m = index_mesh(sm);
   std::vector<V3> p;
   const auto t0 = std::chrono::steady_clock::now();
-  const SMP::Discrete_lie_flow_sphere_report r = map_to_sphere(sm, p);
+  const SMP::Discrete_lie_flow_report r = map_to_sphere(sm, p);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ASSERT_EQ(r.status, SMP::OK) << r.message;
   ASSERT_EQ(p.size(), m.xyz.size());
@@ -581,7 +581,7 @@ void check_sphere_map(const Sphere_case& c, const SM& sm)
   const Sphere_signs s = exact_sphere_signs(p, m.faces);
   EXPECT_EQ(s.neg, 0u);
   EXPECT_EQ(s.zero, 0u);
-  EXPECT_EQ(r.inverted_faces, 0u);
+  EXPECT_EQ(r.caller_inverted_faces, 0u);
   const std::pair<double, double> d = sphere_d_area(m.xyz, p, m.faces);
   EXPECT_NEAR(r.final_d_area, d.first, 1e-9 * d.first);
   EXPECT_NEAR(r.final_metrics.d_area, d.first, 1e-9 * d.first);
@@ -711,7 +711,7 @@ TEST(Sphere_map, LongNeckStaysCertified)
   SMP::Discrete_lie_flow_options o;
   o.max_iterations = 40;
   std::vector<V3> p;
-  const SMP::Discrete_lie_flow_sphere_report r = map_to_sphere(sm, p, o);
+  const SMP::Discrete_lie_flow_report r = map_to_sphere(sm, p, o);
   ASSERT_EQ(r.status, SMP::OK) << r.message;
   EXPECT_GT(r.initial_d_area, 1e20);
   const Sphere_signs s = exact_sphere_signs(p, m.faces);
@@ -777,7 +777,7 @@ TEST(Sphere_map, TinyMeshes)
     const SM sm = read_sphere_mesh(name);
     const Index_mesh m = index_mesh(sm);
     std::vector<V3> p;
-    const SMP::Discrete_lie_flow_sphere_report r = map_to_sphere(sm, p);
+    const SMP::Discrete_lie_flow_report r = map_to_sphere(sm, p);
     ASSERT_EQ(r.status, SMP::OK) << r.message;
     EXPECT_EQ(exact_sphere_signs(p, m.faces).pos, m.faces.size());
     for(const V3& q : p) EXPECT_NEAR(std::sqrt(D::dot(q, q)), 1., 1e-12);
@@ -788,11 +788,11 @@ TEST(Sphere_map, ScaleInvarianceAndCallback)
 {
   SM sm = read_sphere_mesh("ellipsoid");
   std::vector<V3> p1, p2, p3;
-  const SMP::Discrete_lie_flow_sphere_report r1 = map_to_sphere(sm, p1);
+  const SMP::Discrete_lie_flow_report r1 = map_to_sphere(sm, p1);
   SM small = sm, large = sm;
   for(SM_vertex v : vertices(small)) small.point(v) = CGAL::ORIGIN + (small.point(v) - CGAL::ORIGIN) * 1e-8;
   for(SM_vertex v : vertices(large)) large.point(v) = CGAL::ORIGIN + (large.point(v) - CGAL::ORIGIN) * 1e8;
-  const SMP::Discrete_lie_flow_sphere_report r2 = map_to_sphere(small, p2), r3 = map_to_sphere(large, p3);
+  const SMP::Discrete_lie_flow_report r2 = map_to_sphere(small, p2), r3 = map_to_sphere(large, p3);
   ASSERT_EQ(r2.status, SMP::OK);
   ASSERT_EQ(r3.status, SMP::OK);
   EXPECT_EQ(r1.iterations, r2.iterations);
@@ -805,14 +805,14 @@ TEST(Sphere_map, ScaleInvarianceAndCallback)
   std::size_t calls = 0;
   o.tolerance = 0; // never converged
   o.callback = [&calls](const SMP::Discrete_lie_flow_iteration& it) { ++calls; EXPECT_EQ(it.iteration, calls); return calls < 3; };
-  const SMP::Discrete_lie_flow_sphere_report r4 = map_to_sphere(sm, p1, o);
+  const SMP::Discrete_lie_flow_report r4 = map_to_sphere(sm, p1, o);
   ASSERT_EQ(r4.status, SMP::OK);
   EXPECT_EQ(calls, 3u);
   EXPECT_EQ(r4.iterations, 3u);
   EXPECT_EQ(r4.stop_reason, SMP::Discrete_lie_flow_stop_reason::INTERRUPTED);
   o.callback = nullptr;
   o.max_iterations = 2;
-  const SMP::Discrete_lie_flow_sphere_report r5 = map_to_sphere(sm, p1, o);
+  const SMP::Discrete_lie_flow_report r5 = map_to_sphere(sm, p1, o);
   EXPECT_EQ(r5.iterations, 2u);
   EXPECT_EQ(r5.stop_reason, SMP::Discrete_lie_flow_stop_reason::ITERATION_CAP);
 }
@@ -829,7 +829,7 @@ TEST(Sphere_map, DensityDoublesTheAreaOfAHemisphere)
     o.face_density.push_back(z > 0 ? 2. : 1.);
   }
   std::vector<V3> p;
-  const SMP::Discrete_lie_flow_sphere_report r = map_to_sphere(sm, p, o);
+  const SMP::Discrete_lie_flow_report r = map_to_sphere(sm, p, o);
   ASSERT_EQ(r.status, SMP::OK) << r.message;
   EXPECT_EQ(exact_sphere_signs(p, m.faces).pos, m.faces.size());
   long double heavy = 0, light = 0, heavy3 = 0, light3 = 0;

@@ -252,7 +252,7 @@ TEST(Sphere_paper_flips, LawsonFlipsReachTheConvexHull)
 
 struct Paper_run
 {
-  SMP::Discrete_lie_flow_sphere_report report;
+  SMP::Discrete_lie_flow_report report;
   std::vector<V3> xyz, p;
   std::vector<Tri> faces;
   double seconds = 0;
@@ -282,7 +282,7 @@ void check_paper_map(const std::string& name, double max_d_area, bool flips = tr
 {
   SCOPED_TRACE(name);
   const Paper_run run = run_paper(name);
-  const SMP::Discrete_lie_flow_sphere_report& R = run.report;
+  const SMP::Discrete_lie_flow_report& R = run.report;
   ASSERT_EQ(R.status, SMP::OK) << R.message;
   EXPECT_NE(R.stop_reason, SMP::Discrete_lie_flow_stop_reason::NOT_RUN);
   EXPECT_GT(R.iterations, 0u);
@@ -290,7 +290,7 @@ void check_paper_map(const std::string& name, double max_d_area, bool flips = tr
 
   // The flowing triangulation: as many faces, closed genus 0, never folded,
   // covering the sphere exactly once, Delaunay where the flow says so.
-  std::vector<Tri> flowing(R.flowing_faces.begin(), R.flowing_faces.end());
+  std::vector<Tri> flowing(R.domain_faces.begin(), R.domain_faces.end());
   ASSERT_EQ(flowing.size(), run.faces.size());
   EXPECT_TRUE(D::validate_sphere_topology(run.p.size(), flowing).ok());
   EXPECT_EQ(non_positive_faces(run.p, flowing), 0u);
@@ -313,7 +313,7 @@ void check_paper_map(const std::string& name, double max_d_area, bool flips = tr
 
   // The caller's triangles: folds counted, not refused.
   const std::size_t caller = non_positive_faces(run.p, run.faces);
-  EXPECT_EQ(R.inverted_faces + R.degenerate_faces, caller);
+  EXPECT_EQ(R.caller_inverted_faces, caller);
   std::cout << "[sphere paper] " << name << ": " << run.faces.size() << " faces, " << R.iterations << " iterations ("
             << SMP::stop_reason_name(R.stop_reason) << "), d_area " << R.initial_d_area << " -> " << D_flow
             << " (flowing), flips " << R.flips << ", caller folds " << caller << ", " << run.seconds << " s" << std::endl;
@@ -334,14 +334,14 @@ TEST(Sphere_paper_map, WithoutFlipsTheInputTriangulationFlows)
   SMP::Discrete_lie_flow_options o;
   o.delaunay_flips = false;
   const Paper_run run = run_paper("blobby", o);
-  const SMP::Discrete_lie_flow_sphere_report& R = run.report;
+  const SMP::Discrete_lie_flow_report& R = run.report;
   ASSERT_EQ(R.status, SMP::OK) << R.message;
   EXPECT_EQ(R.flips, 0u);
-  ASSERT_EQ(R.flowing_faces.size(), run.faces.size());
-  for(std::size_t f = 0; f < run.faces.size(); ++f) EXPECT_EQ(R.flowing_faces[f], run.faces[f]);
+  ASSERT_EQ(R.domain_faces.size(), run.faces.size());
+  for(std::size_t f = 0; f < run.faces.size(); ++f) EXPECT_EQ(R.domain_faces[f], run.faces[f]);
   // Then the caller's triangles are the flowing ones: never folded.
   EXPECT_EQ(non_positive_faces(run.p, run.faces), 0u);
-  EXPECT_EQ(R.inverted_faces + R.degenerate_faces, 0u);
+  EXPECT_EQ(R.caller_inverted_faces, 0u);
   EXPECT_LT(R.final_d_area, R.initial_d_area);
 }
 
@@ -362,9 +362,9 @@ TEST(Sphere_paper_map, DensityGoesToTheFlowingFaces)
     o.face_density.push_back(north.back() ? 4. : 1.);
   }
   const Paper_run run = run_paper("sphere", o);
-  const SMP::Discrete_lie_flow_sphere_report& R = run.report;
+  const SMP::Discrete_lie_flow_report& R = run.report;
   ASSERT_EQ(R.status, SMP::OK) << R.message;
-  std::vector<Tri> flowing(R.flowing_faces.begin(), R.flowing_faces.end());
+  std::vector<Tri> flowing(R.domain_faces.begin(), R.domain_faces.end());
   EXPECT_EQ(non_positive_faces(run.p, flowing), 0u);
   EXPECT_LT(R.final_d_area, R.initial_d_area);
   long double share = 0, total = 0;
@@ -385,7 +385,7 @@ TEST(Sphere_paper_map, HistoryCallbackAndErrors)
   std::size_t calls = 0;
   o.callback = [&calls](const SMP::Discrete_lie_flow_iteration&) { return ++calls < 3; };
   const Paper_run run = run_paper("ellipsoid", o);
-  const SMP::Discrete_lie_flow_sphere_report& R = run.report;
+  const SMP::Discrete_lie_flow_report& R = run.report;
   ASSERT_EQ(R.status, SMP::OK) << R.message;
   EXPECT_EQ(R.stop_reason, SMP::Discrete_lie_flow_stop_reason::INTERRUPTED);
   EXPECT_EQ(R.iterations, 3u);

@@ -196,11 +196,15 @@ int disk_command(const std::vector<std::string>& args)
   progress.finish();
   const bool ok = run.status == SMP::OK;
 
+  // The library measures both maps of a successful run; a failed run's
+  // initial map is measured here.
   Metrics initial, final_metrics;
-  if(!run.initial_uv.empty()) initial = compute_metrics(mesh, run.initial_uv, density.face_density);
   if(ok) {
-    final_metrics = compute_metrics(mesh, run.final_uv, density.face_density);
+    initial = run.report.initial_metrics;
+    final_metrics = run.report.final_metrics;
     measure_regions(mesh, run.final_uv, density);
+  } else if(!run.initial_uv.empty()) {
+    initial = compute_metrics(mesh, run.initial_uv, density.face_density);
   }
   const Metrics* initial_ptr = run.initial_uv.empty() ? nullptr : &initial;
   const Metrics* final_ptr = ok ? &final_metrics : nullptr;

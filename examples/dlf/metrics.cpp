@@ -7,7 +7,7 @@ namespace dlf_cli {
 
 Metrics compute_metrics(const Indexed_mesh& mesh, const std::vector<Vec2>& uv, const std::vector<double>& face_density)
 {
-  return CGAL::Surface_mesh_parameterization::internal::dlf::planar_distortion(mesh.xyz, uv, mesh.faces, face_density);
+  return CGAL::Surface_mesh_parameterization::discrete_lie_flow_distortion(mesh.xyz, uv, mesh.faces, face_density);
 }
 
 nlohmann::ordered_json metrics_to_json(const Metrics& m)

@@ -2,14 +2,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The METRICS block of doc/design.md (computed by the library's
-// planar_distortion()), as JSON and as text.
+// discrete_lie_flow_distortion()), as JSON and as text.
 
 #ifndef DLF_CLI_METRICS_H
 #define DLF_CLI_METRICS_H
 
 #include "mesh_input.h"
 
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/distortion.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_distortion.h>
 
 #include <nlohmann/json.hpp>
 
@@ -19,7 +19,7 @@
 
 namespace dlf_cli {
 
-typedef CGAL::Surface_mesh_parameterization::internal::dlf::Distortion_metrics Metrics;
+typedef CGAL::Surface_mesh_parameterization::Discrete_lie_flow_distortion Metrics;
 
 /// Distortion of the map `uv` of the caller's triangles `mesh.faces`,
 /// against density-weighted areas when `face_density` (per face) is given.

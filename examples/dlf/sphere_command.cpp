@@ -218,7 +218,7 @@ int sphere_command(const std::vector<std::string>& args)
   const SMP::Error_code status = dlf.parameterize(mesh, sphere);
   progress.finish();
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const SMP::Discrete_lie_flow_sphere_report& R = dlf.report();
+  const SMP::Discrete_lie_flow_report& R = dlf.report();
   const bool ok = status == SMP::OK;
   // Input the command cannot use is refused without output, as `dlf disk`
   // does; a flow error still gets its report.
@@ -246,7 +246,7 @@ int sphere_command(const std::vector<std::string>& args)
         o << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
       }
       if(s.mode == "paper")
-        for(const std::array<int, 3>& t : R.flowing_faces) o << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+        for(const std::array<int, 3>& t : R.domain_faces) o << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
       else
         for(const Triangle& t : input.faces) o << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
     });
@@ -287,7 +287,7 @@ int sphere_command(const std::vector<std::string>& args)
     // As `dlf disk`: "final" is measured on the input triangles; the flowing
     // triangulation (flipped in paper mode) has its own fields.
     j["mode"] = s.mode;
-    j["caller_inverted_faces"] = ok ? json(R.inverted_faces + R.degenerate_faces) : json(nullptr);
+    j["caller_inverted_faces"] = ok ? json(R.caller_inverted_faces) : json(nullptr);
     j["flowing_inverted_faces"] = ok ? json(R.flowing_inverted_faces) : json(nullptr);
     j["flips"] = R.flips;
     j["flowing_non_delaunay_edges"] = ok && s.mode == "paper" ? json(R.flowing_non_delaunay_edges) : json(nullptr);
@@ -340,7 +340,7 @@ int sphere_command(const std::vector<std::string>& args)
                 << "  inverted faces " << R.final_metrics.inverted_faces << "\n";
       if(s.mode == "paper")
         std::cout << "  mode paper: edge flips " << R.flips << ", d_area on the flowing triangulation "
-                  << R.final_d_area << ", input triangles folded " << R.inverted_faces + R.degenerate_faces << "\n";
+                  << R.final_d_area << ", input triangles folded " << R.caller_inverted_faces << "\n";
       std::cout << std::setprecision(3) << "  seconds: initial map " << R.seconds_initial << ", flow " << R.seconds_flow
                 << ", total " << total << "\n";
     }

@@ -10,6 +10,8 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_DENSITY_H
 
 #include <CGAL/Surface_mesh_parameterization/internal/kernel_traits.h>
+#include <CGAL/Kernel/global_functions.h>
+#include <CGAL/squared_distance_3.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 

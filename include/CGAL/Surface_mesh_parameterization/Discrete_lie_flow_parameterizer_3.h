@@ -6,9 +6,9 @@
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/planar_certified_flow.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/density_levels.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/planar_paper_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/mesh_properties.h>
 
 #include <CGAL/Surface_mesh_parameterization/Symmetric_barycentric_mapping_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
@@ -19,11 +19,6 @@
 #include <CGAL/Eigen_solver_traits.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
-
-#include <Eigen/SparseCholesky>
-#ifdef DLF_USE_CHOLMOD
-#include <Eigen/CholmodSupport>
-#endif
 
 #include <algorithm>
 #include <array>
@@ -39,16 +34,6 @@
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
-
-namespace internal {
-namespace dlf {
-#ifdef DLF_USE_CHOLMOD
-typedef Eigen::CholmodSupernodalLLT<Sparse_matrix, Eigen::Lower> Default_spd_solver;
-#else
-typedef Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Lower> Default_spd_solver;
-#endif
-} // namespace dlf
-} // namespace internal
 
 /// \ingroup PkgSurfaceMeshParameterizationMethods
 ///
@@ -78,7 +63,6 @@ class Discrete_lie_flow_parameterizer_3
 {
 public:
   typedef TriangleMesh_ Triangle_mesh;
-  typedef TriangleMesh_ TriangleMesh;
   typedef typename Default::Get<InitialParameterizer_,
     Symmetric_barycentric_mapping_parameterizer_3<TriangleMesh_> >::type Initial_parameterizer;
   typedef typename Default::Get<SolverTraits_,
@@ -124,8 +108,9 @@ public:
   /// Writes the area elements of the last run into vertex property maps
   /// (`vertex_descriptor` → number): `target` receives A_M(v), the lumped
   /// (density-weighted) surface area scaled to the domain's total, `domain`
-  /// receives A_Ω(v) of the final map. On a `Surface_mesh`, pass maps from
-  /// `add_property_map<vertex_descriptor, double>("v:dlf_target_area")` etc.
+  /// receives A_Ω(v) of the final map. On a `Surface_mesh`, `parameterize()`
+  /// already stores them as the properties "v:dlf_target_area" and
+  /// "v:dlf_domain_area" (and the density as "f:dlf_density").
   template <class TargetAreaMap, class DomainAreaMap>
   void area_elements(TargetAreaMap target, DomainAreaMap domain) const
   {
@@ -161,11 +146,7 @@ public:
     namespace D = internal::dlf;
     Discrete_lie_flow_report& R = *m_shared->report;
     R = Discrete_lie_flow_report();
-    auto fail = [&R](int code, const std::string& msg) {
-      R.status = Error_code(code);
-      R.message = msg.empty() ? std::string(discrete_lie_flow_error_message(code)) : msg;
-      return Error_code(code);
-    };
+    auto fail = [&R](int code, const std::string& msg) { return D::report_failure(R, code, msg); };
     if(faces(mesh).empty()) return fail(ERROR_EMPTY_MESH, "");
     if(bhd == boost::graph_traits<Triangle_mesh>::null_halfedge() || !is_border(bhd, mesh))
       return fail(ERROR_NO_TOPOLOGICAL_DISC, "the given halfedge is not on a border");
@@ -190,105 +171,11 @@ public:
       if(!std::isfinite(uv[i][0]) || !std::isfinite(uv[i][1]))
         return fail(ERROR_INITIAL_MAP_FOLDED, "initial map: vertex " + std::to_string(i) + " has a non-finite uv");
     }
-    code = run_flow(P, uv);
+    code = D::flow_disk(P, uv, m_options, m_solver_traits.solver(), R);
     if(code != OK) return code;
     for(std::size_t i = 0; i < vertex_of.size(); ++i) put(uvmap, vertex_of[i], Point_2(uv[i][0], uv[i][1]));
-    return OK;
-  }
-
-  /// The flow alone, on index data: `uv` is a positively oriented initial
-  /// map of `P` (modified in place on success). Fills the report.
-  Error_code run_flow(internal::dlf::Disk_problem& P, std::vector<internal::dlf::Vec2>& uv)
-  {
-    namespace D = internal::dlf;
-    typedef std::chrono::steady_clock Clock;
-    Discrete_lie_flow_report& R = *m_shared->report;
-    auto fail = [&R](int code, const std::string& msg) {
-      R.status = Error_code(code);
-      R.message = msg;
-      return Error_code(code);
-    };
-    // Orientation: the caller's faces must all be positive, or all negative
-    // (some border parameterizers run clockwise); the flow then works on
-    // the faces with their index order reversed, and the map keeps the
-    // orientation of the initial one.
-    D::Orientation_count oc = D::count_orientations_2(uv, P.faces);
-    if(oc.inverted * 2 > P.faces.size()) {
-      for(D::Face& f : P.faces) std::swap(f[1], f[2]);
-      oc = D::count_orientations_2(uv, P.faces);
-    }
-    if(!oc.all_positive()) {
-      const D::Face& f = P.faces[std::size_t(oc.first_bad)];
-      std::ostringstream s;
-      s << "the initial map has " << oc.inverted << " inverted and " << oc.degenerate
-        << " degenerate triangles; first: face " << oc.first_bad << " (vertices " << f[0] << ", " << f[1] << ", " << f[2] << ")";
-      return fail(Error_code(ERROR_INITIAL_MAP_FOLDED), s.str());
-    }
-    std::vector<D::Vec2> loop(P.boundary.size());
-    for(std::size_t k = 0; k < loop.size(); ++k) loop[k] = uv[std::size_t(P.boundary[k])];
-    double twice = 0;
-    for(std::size_t k = 0; k < loop.size(); ++k) {
-      const D::Vec2 &a = loop[k], &b = loop[(k + 1) % loop.size()];
-      twice += a[0] * b[1] - a[1] * b[0];
-    }
-    if(twice < 0) {
-      std::reverse(P.boundary.begin(), P.boundary.end());
-      std::reverse(loop.begin(), loop.end());
-    }
-    D::Boundary_curve curve(loop, m_options.border);
-    R.border = curve.kind();
-
-    const Clock::time_point t0 = Clock::now();
-    D::Flow_outcome out;
-    if(m_options.mode == Discrete_lie_flow_mode::PAPER) {
-      D::Planar_paper_flow<typename Solver_traits::Solver> flow(P, uv, curve, m_options, m_solver_traits.solver(),
-                                                                D::Paper_flow_settings());
-      out = D::run_flow(flow, m_options);
-    } else {
-      D::Planar_certified_flow<typename Solver_traits::Solver> flow(P, uv, curve, m_options, m_solver_traits.solver(),
-                                                                    D::Planar_flow_settings());
-      out = D::run_flow(flow, m_options);
-    }
-    const std::vector<D::Face>& domain = out.domain_faces;
-    R.seconds_flow = std::chrono::duration<double>(Clock::now() - t0).count();
-
-    R.stop_reason = out.stop_reason;
-    R.iterations = out.iterations;
-    R.initial_d_area = out.initial_d_area;
-    R.final_d_area = out.final_d_area;
-    R.final_residual = out.final_residual;
-    std::vector<double> caller_areas;
-    D::signed_areas_2(uv, P.faces, caller_areas);
-    R.final_share_error = D::Density_levels(P.xyz, P.faces, P.target).error(caller_areas);
-    R.flips = out.flips;
-    R.rejected_by_exact_check = out.rejected_by_exact_check;
-    R.factorizations = out.factorizations;
-    R.symbolic_analyses = out.symbolic_analyses;
-    R.history = std::move(out.history);
-    R.seconds_assembly = out.seconds_assembly;
-    R.seconds_solve = out.seconds_solve;
-    R.seconds_step = out.seconds_step;
-    const D::Orientation_count cc = D::count_orientations_2(uv, P.faces);
-    R.caller_inverted_faces = cc.inverted + cc.degenerate;
-    const D::Orientation_count dc = D::count_orientations_2(uv, domain);
-    R.flowing_inverted_faces = dc.inverted + dc.degenerate;
-    R.domain_faces.assign(domain.begin(), domain.end());
-    // The area elements of the final triangulation, with the targets the flow used on it.
-    std::vector<double> u;
-    D::signed_areas_2(uv, domain, u);
-    D::lump_on_vertices(uv.size(), domain, u, R.domain_area);
-    D::lump_on_vertices(uv.size(), domain, out.domain_target, R.target_area);
-    double so = 0, st = 0;
-    for(std::size_t i = 0; i < uv.size(); ++i) { so += R.domain_area[i]; st += R.target_area[i]; }
-    for(double& a : R.target_area) a *= so / st;
-
-    if(R.flowing_inverted_faces != 0) // cannot happen: every accepted step is certified
-      return fail(Error_code(ERROR_NO_1_TO_1_MAPPING), "the flow produced inverted triangles");
-    if(out.iterations == 0 && out.stop_reason == Discrete_lie_flow_stop_reason::STALLED)
-      return fail(Error_code(ERROR_FLOW_STALLED), out.solver_failed ? "the linear solver failed on the initial map"
-                                                                     : "no step improves the initial map");
-    R.status = OK;
-    R.message = "Success";
+    // On a Surface_mesh, the area elements and the densities become properties of the mesh.
+    D::store_area_elements(mesh, vertex_of, R.target_area, R.domain_area, face_of, R.face_density);
     return OK;
   }
 
@@ -309,7 +196,7 @@ private:
   {
     namespace D = internal::dlf;
     Discrete_lie_flow_report& R = *m_shared->report;
-    auto fail = [&R](int code, const std::string& msg) { R.status = Error_code(code); R.message = msg; return Error_code(code); };
+    auto fail = [&R](int code, const std::string& msg) { return D::report_failure(R, code, msg); };
     // Faces of the component, by a walk across non-border edges.
     std::vector<face_descriptor> stack(1, face(opposite(bhd, mesh), mesh));
     std::set<face_descriptor> seen(stack.begin(), stack.end());

@@ -7,6 +7,8 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/Surface_mesh_parameterization/internal/kernel_traits.h>
+#include <CGAL/Kernel/global_functions.h>
+#include <CGAL/squared_distance_3.h>
 
 #include <boost/optional.hpp>
 

@@ -8,6 +8,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_DISTORTION_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_DISTORTION_H
 
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certification.h>
 
 #include <algorithm>
@@ -19,21 +20,7 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace dlf {
 
-/// Distortion of a map, after the domain is scaled uniformly so that its
-/// total area equals the total (density-weighted) input area.
-struct Distortion_metrics
-{
-  double d_area = 0;              ///< Σ w_t (σ1σ2 + 1/(σ1σ2)), optimum 2
-  double arap = 0;                ///< Σ w_t ((σ1 − 1)² + (σ2 − 1)²), σ2 < 0 on inverted faces
-  double symmetric_dirichlet = 0; ///< Σ_t (σ1² + σ1⁻² + σ2² + σ2⁻²), plain sum
-  double log_area_mean_abs = 0;   ///< mean over faces of |log(area_Ω / (ρ area_M))|
-  double log_area_max_abs = 0;
-  double log_area_rms = 0;
-  std::size_t inverted_faces = 0;   ///< by exact orientation, against the majority orientation
-  std::size_t degenerate_faces = 0; ///< exactly zero domain area; left out of the sums
-  double min_angle_degrees = 0;     ///< smallest angle of a domain triangle
-  std::size_t faces_below_1_degree = 0;
-};
+typedef Discrete_lie_flow_distortion Distortion_metrics;
 
 /// The smallest angle (radians) of a triangle in 3D.
 inline double min_angle_3(const Vec3& a, const Vec3& b, const Vec3& c)

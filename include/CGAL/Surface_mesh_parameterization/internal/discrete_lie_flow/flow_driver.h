@@ -104,6 +104,18 @@ public:
     double stall_step = 0;
   };
 
+  /// The rules of the options: a plateau of their window and tolerance, and
+  /// their stall window; no slow tail and no stall test until a flow sets them.
+  static Rules rules_of(const Discrete_lie_flow_options& opt)
+  {
+    Rules r;
+    r.plateau_window = opt.plateau_window;
+    r.plateau_tolerance = opt.plateau_tolerance;
+    r.stall_window = opt.stall_window;
+    r.stall_step = 1e-3 * opt.step_cap;
+    return r;
+  }
+
   explicit Flow_stopping(const Rules& rules) : m_rules(rules) {}
 
   /// Restarts the progress sequence (a new phase of the flow), from `x0` if given.
@@ -158,6 +170,19 @@ inline double step_fraction(const Discrete_lie_flow_options& opt, double fallbac
 {
   return opt.mu > 0 ? opt.mu : fallback;
 }
+
+/// What every policy shares: its stop tests, and a plateau that ends the
+/// flow (a policy with phases hides `on_plateau()`).
+class Flow_policy_base
+{
+public:
+  explicit Flow_policy_base(const Flow_stopping::Rules& rules) : m_stopping(rules) {}
+  Flow_stopping& stopping() { return m_stopping; }
+  bool on_plateau() { return true; }
+
+protected:
+  Flow_stopping m_stopping;
+};
 
 /// Smallest critical root over `faces` for `root(face index, bound so far)`;
 /// `limiting` receives its face. The bound lets a root function skip faces

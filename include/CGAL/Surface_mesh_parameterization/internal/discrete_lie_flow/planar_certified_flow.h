@@ -63,18 +63,18 @@ struct Planar_flow_settings
 /// `uv` (positively oriented) and `curve` are moved in place; the result is
 /// always a certified map not worse than the start.
 template <class EigenSolver>
-class Planar_certified_flow
+class Planar_certified_flow : public Flow_policy_base
 {
 public:
   Planar_certified_flow(const Disk_problem& P, std::vector<Vec2>& uv, Boundary_curve& curve,
                         const Discrete_lie_flow_options& opt, EigenSolver& eigen_solver,
                         const Planar_flow_settings& settings)
-    : m_P(P), m_uv(uv), m_curve(curve), m_opt(opt), m_settings(settings), m_n(uv.size()),
+    : Flow_policy_base(Flow_stopping::rules_of(opt)), m_P(P), m_uv(uv), m_curve(curve), m_opt(opt), m_settings(settings), m_n(uv.size()),
       m_dofs(uv.size(), P.boundary, curve), m_energy(P.target), m_log_energy(m_energy),
       m_sobolev(m_dofs.boundary_of, eigen_solver), m_newton_solver(m_newton_eigen_solver),
       m_newton_system(m_dofs.first, m_dofs.count, m_dofs.size), m_eps(settings.newton_regularization),
       m_basis(std::size_t(m_dofs.size)), m_tangent(uv.size()), m_around(0, std::vector<Face>()),
-      m_levels(P.xyz, P.faces, P.target), m_stopping(stopping_rules(opt))
+      m_levels(P.xyz, P.faces, P.target)
   {}
 
   bool start(Flow_outcome& out)
@@ -159,8 +159,6 @@ public:
   double d_area() const { return m_E; }
   double progress() const { return m_E; }
   double residual() const { return area_residual(m_n, m_P.faces, m_u, m_P.target); }
-  Flow_stopping& stopping() { return m_stopping; }
-  bool on_plateau() { return true; }
 
   void finish(Flow_outcome& out)
   {
@@ -171,14 +169,6 @@ public:
   }
 
 private:
-  static Flow_stopping::Rules stopping_rules(const Discrete_lie_flow_options& opt)
-  {
-    Flow_stopping::Rules r;
-    r.plateau_window = opt.plateau_window;
-    r.plateau_tolerance = opt.plateau_tolerance;
-    return r;
-  }
-
   /// ∂E/∂p (∂L/∂p in the opening), the dof basis, and ∂E/∂dof in `m_gr`.
   void gradient()
   {
@@ -282,7 +272,6 @@ private:
   Vertex_faces m_around;
   std::vector<char> m_movable;
   const Density_levels m_levels;
-  Flow_stopping m_stopping;
 };
 
 /// Runs the certified flow from the positively oriented `uv` (modified in

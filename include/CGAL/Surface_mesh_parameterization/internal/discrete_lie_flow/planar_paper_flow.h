@@ -143,16 +143,15 @@ inline void guard_collapses(const std::vector<Vec2>& uv, const std::vector<Face>
 /// triangulation and its targets; the reported D_area and stop reason are
 /// those of the returned map.
 template <class EigenSolver>
-class Planar_paper_flow
+class Planar_paper_flow : public Flow_policy_base
 {
 public:
   Planar_paper_flow(const Disk_problem& P, std::vector<Vec2>& uv, Boundary_curve& curve,
                     const Discrete_lie_flow_options& opt, EigenSolver& eigen_solver,
                     const Paper_flow_settings& settings)
-    : m_P(P), m_uv(uv), m_curve(curve), m_opt(opt), m_settings(settings), m_n(uv.size()),
+    : Flow_policy_base(stopping_rules(opt, settings)), m_P(P), m_uv(uv), m_curve(curve), m_opt(opt), m_settings(settings), m_n(uv.size()),
       m_dofs(uv.size(), P.boundary, curve), m_solver(eigen_solver), m_tri(P.faces),
-      m_targets(P.xyz, P.faces, P.target), m_target(P.target), m_basis(std::size_t(m_dofs.size)), m_vel(uv.size()),
-      m_stopping(stopping_rules(opt, settings))
+      m_targets(P.xyz, P.faces, P.target), m_target(P.target), m_basis(std::size_t(m_dofs.size)), m_vel(uv.size())
   {
     lump_on_vertices(m_n, P.faces, P.target, m_literal_AM);
   }
@@ -260,8 +259,6 @@ public:
   double d_area() const { return m_d_area; }
   double progress() const { return m_best; }
   double residual() const { return area_residual(m_n, m_tri.faces, m_u, m_target); }
-  Flow_stopping& stopping() { return m_stopping; }
-  bool on_plateau() { return true; }
 
   void finish(Flow_outcome& out)
   {
@@ -278,15 +275,12 @@ private:
   /// A plateau tolerance of 0 turns both plateau tests off (the paper's Table 2).
   static Flow_stopping::Rules stopping_rules(const Discrete_lie_flow_options& opt, const Paper_flow_settings& settings)
   {
-    Flow_stopping::Rules r;
+    Flow_stopping::Rules r = Flow_stopping::rules_of(opt);
     r.plateau = opt.plateau_tolerance > 0;
-    r.plateau_window = opt.plateau_window;
     r.plateau_tolerance = (std::max)(opt.plateau_tolerance, settings.plateau_tolerance);
     r.tail_rate = opt.plateau_tolerance > 0 ? settings.tail_rate : 0;
     r.tail_window = settings.tail_window;
     r.stall = Flow_stopping::SAME_LIMITING_FACE;
-    r.stall_window = opt.stall_window;
-    r.stall_step = 1e-3 * opt.step_cap;
     return r;
   }
 
@@ -369,7 +363,6 @@ private:
   std::vector<double> m_best_target;
   std::vector<Vec2> m_basis, m_vel;
   Eigen::VectorXd m_d;
-  Flow_stopping m_stopping;
 };
 
 /// Runs the paper's flow from the positively oriented `uv`; `flowing`

@@ -96,15 +96,15 @@ struct Sphere_flow_settings
 /// from the positively oriented unit vectors `p` (moved in place; always
 /// certified and not worse than the start).
 template <class EigenSolver>
-class Sphere_certified_flow
+class Sphere_certified_flow : public Flow_policy_base
 {
 public:
   Sphere_certified_flow(const Sphere_problem& P, std::vector<Vec3>& p, const Discrete_lie_flow_options& opt,
                         EigenSolver& eigen_solver, const Sphere_flow_settings& settings)
-    : m_P(P), m_p(p), m_opt(opt), m_settings(settings), m_n(p.size()), m_energy(P.target),
+    : Flow_policy_base(stopping_rules(opt)), m_P(P), m_p(p), m_opt(opt), m_settings(settings), m_n(p.size()), m_energy(P.target),
       m_polish_energy(P.target, settings.uniform_weight), m_kappa(settings.cone_weight), m_solver(eigen_solver),
       m_newton_solver(m_newton_eigen_solver), m_eps(settings.newton_regularization), m_around(0, std::vector<Face>()),
-      m_d(p.size()), m_trial(p.size()), m_levels(P.xyz, P.faces, P.target), m_stopping(stopping_rules(opt))
+      m_d(p.size()), m_trial(p.size()), m_levels(P.xyz, P.faces, P.target)
   {}
 
   bool start(Flow_outcome& out)
@@ -231,7 +231,6 @@ public:
     signed_areas_sphere(m_p, m_P.faces, flat);
     return area_residual(m_n, m_P.faces, flat, m_P.target);
   }
-  Flow_stopping& stopping() { return m_stopping; }
 
   /// A plateau of the opening ends the opening: polish from here.
   bool on_plateau()
@@ -254,11 +253,8 @@ public:
 private:
   static Flow_stopping::Rules stopping_rules(const Discrete_lie_flow_options& opt)
   {
-    Flow_stopping::Rules r;
-    r.plateau_window = opt.plateau_window;
-    r.plateau_tolerance = opt.plateau_tolerance;
+    Flow_stopping::Rules r = Flow_stopping::rules_of(opt);
     r.stall = Flow_stopping::HARD_STEPS;
-    r.stall_window = opt.stall_window;
     return r;
   }
 
@@ -430,7 +426,6 @@ private:
   double m_lambda_prev = infinite_step();
   std::vector<double> m_mean_history;
   const Density_levels m_levels;
-  Flow_stopping m_stopping;
 };
 
 /// Runs the certified spherical flow from the positively oriented unit

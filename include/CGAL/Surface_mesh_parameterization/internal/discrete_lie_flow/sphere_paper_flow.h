@@ -48,14 +48,14 @@ struct Sphere_paper_outcome : Flow_outcome
 /// flipped once more to be Delaunay where it stands. Every face of every
 /// accepted flowing triangulation is positively oriented by the exact predicate.
 template <class EigenSolver>
-class Sphere_paper_flow
+class Sphere_paper_flow : public Flow_policy_base
 {
 public:
   Sphere_paper_flow(const Sphere_problem& P, std::vector<Vec3>& p, const Discrete_lie_flow_options& opt,
                     EigenSolver& eigen_solver)
-    : m_P(P), m_p(p), m_opt(opt), m_n(p.size()), m_solver(eigen_solver), m_tri(P.faces),
+    : Flow_policy_base(stopping_rules(opt)), m_P(P), m_p(p), m_opt(opt), m_n(p.size()), m_solver(eigen_solver), m_tri(P.faces),
       m_max_flips(100 * P.faces.size() + 100), m_targets(P.xyz, P.faces, P.target), m_target(P.target),
-      m_trial(p.size()), m_grad(p.size()), m_d(p.size()), m_wsum(p.size()), m_best_tri(P.faces), m_stopping(stopping_rules(opt))
+      m_trial(p.size()), m_grad(p.size()), m_d(p.size()), m_wsum(p.size()), m_best_tri(P.faces)
   {
     lump_on_vertices(m_n, P.faces, P.target, m_literal_AM);
   }
@@ -172,8 +172,6 @@ public:
   /// while as the flow descends.
   double progress() const { return m_best_iterate; }
   double residual() const { return area_residual(m_n, m_tri.faces, m_u, m_target); }
-  Flow_stopping& stopping() { return m_stopping; }
-  bool on_plateau() { return true; }
 
   void finish(Flow_outcome& out)
   {
@@ -193,12 +191,8 @@ public:
 private:
   static Flow_stopping::Rules stopping_rules(const Discrete_lie_flow_options& opt)
   {
-    Flow_stopping::Rules r;
-    r.plateau_window = opt.plateau_window;
-    r.plateau_tolerance = opt.plateau_tolerance;
+    Flow_stopping::Rules r = Flow_stopping::rules_of(opt);
     r.stall = Flow_stopping::SAME_LIMITING_FACE;
-    r.stall_window = opt.stall_window;
-    r.stall_step = 1e-3 * opt.step_cap;
     return r;
   }
 
@@ -252,7 +246,6 @@ private:
   double m_d_area = 0, m_best = 0, m_best_iterate = infinite_step();
   bool m_best_converged = false;
   std::size_t m_flips = 0, m_non_delaunay_edges = 0;
-  Flow_stopping m_stopping;
 };
 
 /// Runs the paper's spherical flow (Sphere_paper_flow) from the positively

@@ -1,0 +1,132 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_DISTORTION_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_DISTORTION_H
+
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/distortion.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/number_utils.h>
+
+#include <array>
+#include <map>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \ingroup PkgSurfaceMeshParameterizationMethods
+/// The distortion metrics (doc/design.md, "Metrics") of the planar map `uv`
+/// of the triangles `faces` over the points `xyz`, in index form; inverted
+/// faces are counted with the exact predicate. `face_density` (per face,
+/// empty for ρ ≡ 1) weighs the input areas as a measure-controlled map's
+/// targets do.
+inline Discrete_lie_flow_distortion
+discrete_lie_flow_distortion(const std::vector<std::array<double, 3> >& xyz,
+                             const std::vector<std::array<double, 2> >& uv,
+                             const std::vector<std::array<int, 3> >& faces,
+                             const std::vector<double>& face_density = std::vector<double>())
+{
+  return internal::dlf::planar_distortion(xyz, uv, faces, face_density);
+}
+
+/// \ingroup PkgSurfaceMeshParameterizationMethods
+/// The same metrics for a map onto the unit sphere: the domain triangles are
+/// the flat triangles between the points `sphere`.
+inline Discrete_lie_flow_distortion
+discrete_lie_flow_sphere_distortion(const std::vector<std::array<double, 3> >& xyz,
+                                    const std::vector<std::array<double, 3> >& sphere,
+                                    const std::vector<std::array<int, 3> >& faces,
+                                    const std::vector<double>& face_density = std::vector<double>())
+{
+  return internal::dlf::spherical_distortion(xyz, sphere, faces, face_density);
+}
+
+namespace internal {
+namespace dlf {
+
+/// Index form of the triangles of `mesh` (vertex order of `vertices(mesh)`)
+/// with their positions and the domain point of each vertex from `map`.
+template <class TriangleMesh, class VertexMap, class Domain_point, class To_domain>
+void indexed_map(const TriangleMesh& mesh, VertexMap map, std::vector<Vec3>& xyz, std::vector<Domain_point>& dom,
+                 std::vector<Face>& triangles, const To_domain& to_domain)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  std::map<vertex_descriptor, int> index;
+  const auto ppmap = get(CGAL::vertex_point, mesh);
+  for(vertex_descriptor v : vertices(mesh)) {
+    index.emplace(v, int(xyz.size()));
+    const auto& p = get(ppmap, v);
+    xyz.push_back({{ CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) }});
+    dom.push_back(to_domain(get(map, v)));
+  }
+  for(face_descriptor f : faces(mesh)) {
+    Face t{{ -1, -1, -1 }};
+    int k = 0;
+    for(vertex_descriptor v : vertices_around_face(halfedge(f, mesh), mesh))
+      if(k < 3) t[std::size_t(k++)] = index[v];
+    triangles.push_back(t);
+  }
+}
+
+} // namespace dlf
+} // namespace internal
+
+/// \ingroup PkgSurfaceMeshParameterizationMethods
+/// The distortion metrics of the planar map `uvmap` (`vertex_descriptor` →
+/// a 2D point) of the triangle mesh `mesh`, e.g. the result of any
+/// parameterizer of this package or of CGAL's.
+/// \pre `mesh` is a triangle mesh.
+template <class TriangleMesh, class VertexUVMap>
+Discrete_lie_flow_distortion discrete_lie_flow_distortion(const TriangleMesh& mesh, VertexUVMap uvmap)
+{
+  std::vector<internal::dlf::Vec3> xyz;
+  std::vector<internal::dlf::Vec2> uv;
+  std::vector<internal::dlf::Face> faces;
+  internal::dlf::indexed_map(mesh, uvmap, xyz, uv, faces, [](const auto& p) {
+    return internal::dlf::Vec2{{ CGAL::to_double(p.x()), CGAL::to_double(p.y()) }};
+  });
+  return internal::dlf::planar_distortion(xyz, uv, faces);
+}
+
+/// \ingroup PkgSurfaceMeshParameterizationMethods
+/// The same for a measure-controlled map: `face_density` (`face_descriptor`
+/// → number ρ > 0) weighs the input areas as the flow's targets do.
+template <class TriangleMesh, class VertexUVMap, class FaceDensityMap>
+Discrete_lie_flow_distortion discrete_lie_flow_distortion(const TriangleMesh& mesh, VertexUVMap uvmap,
+                                                          FaceDensityMap face_density)
+{
+  std::vector<internal::dlf::Vec3> xyz;
+  std::vector<internal::dlf::Vec2> uv;
+  std::vector<internal::dlf::Face> faces;
+  internal::dlf::indexed_map(mesh, uvmap, xyz, uv, faces, [](const auto& p) {
+    return internal::dlf::Vec2{{ CGAL::to_double(p.x()), CGAL::to_double(p.y()) }};
+  });
+  std::vector<double> rho;
+  for(typename boost::graph_traits<TriangleMesh>::face_descriptor f : faces(mesh)) rho.push_back(double(get(face_density, f)));
+  return internal::dlf::planar_distortion(xyz, uv, faces, rho);
+}
+
+/// \ingroup PkgSurfaceMeshParameterizationMethods
+/// The distortion metrics of the map `sphere_map` (`vertex_descriptor` → a
+/// 3D point on the unit sphere) of the closed triangle mesh `mesh`.
+/// \pre `mesh` is a triangle mesh.
+template <class TriangleMesh, class VertexSphereMap>
+Discrete_lie_flow_distortion discrete_lie_flow_sphere_distortion(const TriangleMesh& mesh, VertexSphereMap sphere_map)
+{
+  std::vector<internal::dlf::Vec3> xyz, sphere;
+  std::vector<internal::dlf::Face> faces;
+  internal::dlf::indexed_map(mesh, sphere_map, xyz, sphere, faces, [](const auto& p) {
+    return internal::dlf::Vec3{{ CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) }};
+  });
+  return internal::dlf::spherical_distortion(xyz, sphere, faces);
+}
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

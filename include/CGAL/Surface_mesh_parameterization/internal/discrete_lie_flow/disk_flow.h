@@ -1,0 +1,167 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The planar flow on index data, from an initial map to a filled report:
+// orientation and border checks, the boundary curve, the mode's policy run
+// by the flow driver, and the report (metrics, area elements, counts).
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_DISK_FLOW_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_DISK_FLOW_H
+
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/area_elements.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/boundary_curve.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certification.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/density_levels.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_problem.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/distortion.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow_driver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/planar_certified_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/planar_paper_flow.h>
+
+#include <algorithm>
+#include <chrono>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace dlf {
+
+/// Per face: the density ρ_f = target_f / area_M(f) of a problem.
+template <class Problem>
+std::vector<double> face_densities(const Problem& P)
+{
+  std::vector<double> rho(P.faces.size());
+  for(std::size_t f = 0; f < P.faces.size(); ++f) {
+    const Face& t = P.faces[f];
+    rho[f] = P.target[f] / triangle_area_3(P.xyz[std::size_t(t[0])], P.xyz[std::size_t(t[1])], P.xyz[std::size_t(t[2])]);
+  }
+  return rho;
+}
+
+/// The area elements of the final triangulation (the outcome's, with the
+/// targets the flow used on it) into the report, the targets scaled to the
+/// domain's total area.
+template <class Point, class Areas>
+void report_area_elements(const std::vector<Point>& p, const Flow_outcome& out, const Areas& signed_areas,
+                          Discrete_lie_flow_report& R)
+{
+  std::vector<double> u;
+  signed_areas(p, out.domain_faces, u);
+  lump_on_vertices(p.size(), out.domain_faces, u, R.domain_area);
+  lump_on_vertices(p.size(), out.domain_faces, out.domain_target, R.target_area);
+  double so = 0, st = 0;
+  for(std::size_t i = 0; i < p.size(); ++i) { so += R.domain_area[i]; st += R.target_area[i]; }
+  for(double& a : R.target_area) a *= so / st;
+  R.domain_faces.assign(out.domain_faces.begin(), out.domain_faces.end());
+}
+
+/// What every flow reports the same way.
+inline void report_outcome(Flow_outcome& out, Discrete_lie_flow_report& R)
+{
+  R.stop_reason = out.stop_reason;
+  R.iterations = out.iterations;
+  R.initial_d_area = out.initial_d_area;
+  R.final_d_area = out.final_d_area;
+  R.final_residual = out.final_residual;
+  R.flips = out.flips;
+  R.rejected_by_exact_check = out.rejected_by_exact_check;
+  R.factorizations = out.factorizations;
+  R.symbolic_analyses = out.symbolic_analyses;
+  R.seconds_assembly = out.seconds_assembly;
+  R.seconds_solve = out.seconds_solve;
+  R.seconds_step = out.seconds_step;
+  R.history = std::move(out.history);
+}
+
+/// Sets the report's status and message; returns the code.
+inline Error_code report_failure(Discrete_lie_flow_report& R, int code, const std::string& message)
+{
+  R.status = Error_code(code);
+  R.message = message.empty() ? std::string(discrete_lie_flow_error_message(code)) : message;
+  return Error_code(code);
+}
+
+/// The planar flow on index data: `uv` is an initial map of `P` with all
+/// faces positive or all negative (modified in place on success; the map
+/// keeps the initial orientation). Fills `R`.
+template <class EigenSolver>
+Error_code flow_disk(Disk_problem& P, std::vector<Vec2>& uv, const Discrete_lie_flow_options& opt,
+                     EigenSolver& solver, Discrete_lie_flow_report& R)
+{
+  typedef std::chrono::steady_clock Clock;
+  R.vertices = uv.size();
+  R.faces = P.faces.size();
+  // Some border parameterizers run clockwise: the flow then works on the
+  // faces with their index order reversed.
+  Orientation_count oc = count_orientations_2(uv, P.faces);
+  if(oc.inverted * 2 > P.faces.size()) {
+    for(Face& f : P.faces) std::swap(f[1], f[2]);
+    oc = count_orientations_2(uv, P.faces);
+  }
+  if(!oc.all_positive()) {
+    const Face& f = P.faces[std::size_t(oc.first_bad)];
+    std::ostringstream s;
+    s << "the initial map has " << oc.inverted << " inverted and " << oc.degenerate
+      << " degenerate triangles; first: face " << oc.first_bad << " (vertices " << f[0] << ", " << f[1] << ", " << f[2] << ")";
+    return report_failure(R, ERROR_INITIAL_MAP_FOLDED, s.str());
+  }
+  std::vector<Vec2> loop(P.boundary.size());
+  for(std::size_t k = 0; k < loop.size(); ++k) loop[k] = uv[std::size_t(P.boundary[k])];
+  double twice = 0;
+  for(std::size_t k = 0; k < loop.size(); ++k) {
+    const Vec2 &a = loop[k], &b = loop[(k + 1) % loop.size()];
+    twice += a[0] * b[1] - a[1] * b[0];
+  }
+  if(twice < 0) {
+    std::reverse(P.boundary.begin(), P.boundary.end());
+    std::reverse(loop.begin(), loop.end());
+  }
+  Boundary_curve curve(loop, opt.border);
+  R.border = curve.kind();
+  R.face_density = face_densities(P);
+  R.initial_metrics = planar_distortion(P.xyz, uv, P.faces, R.face_density);
+
+  const Clock::time_point t0 = Clock::now();
+  Flow_outcome out;
+  if(opt.mode == Discrete_lie_flow_mode::PAPER) {
+    Planar_paper_flow<EigenSolver> flow(P, uv, curve, opt, solver, Paper_flow_settings());
+    out = run_flow(flow, opt);
+  } else {
+    Planar_certified_flow<EigenSolver> flow(P, uv, curve, opt, solver, Planar_flow_settings());
+    out = run_flow(flow, opt);
+  }
+  R.seconds_flow = std::chrono::duration<double>(Clock::now() - t0).count();
+  report_area_elements(uv, out, [](const std::vector<Vec2>& x, const std::vector<Face>& F, std::vector<double>& u) {
+    signed_areas_2(x, F, u);
+  }, R);
+  report_outcome(out, R);
+  std::vector<double> caller_areas;
+  signed_areas_2(uv, P.faces, caller_areas);
+  R.final_share_error = Density_levels(P.xyz, P.faces, P.target).error(caller_areas);
+  R.final_metrics = planar_distortion(P.xyz, uv, P.faces, R.face_density);
+  const Orientation_count cc = count_orientations_2(uv, P.faces);
+  R.caller_inverted_faces = cc.inverted + cc.degenerate;
+  const Orientation_count dc = count_orientations_2(uv, out.domain_faces);
+  R.flowing_inverted_faces = dc.inverted + dc.degenerate;
+  if(R.flowing_inverted_faces != 0) // cannot happen: every accepted step is certified
+    return report_failure(R, ERROR_NO_1_TO_1_MAPPING, "the flow produced inverted triangles");
+  if(out.iterations == 0 && out.stop_reason == Discrete_lie_flow_stop_reason::STALLED)
+    return report_failure(R, ERROR_FLOW_STALLED, out.solver_failed ? "the linear solver failed on the initial map"
+                                                                   : "no step improves the initial map");
+  R.status = OK;
+  R.message = "Success";
+  return OK;
+}
+
+} // namespace dlf
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

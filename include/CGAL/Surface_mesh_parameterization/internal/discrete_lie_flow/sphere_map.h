@@ -1,0 +1,110 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The spherical map on index data, from a closed genus-0 mesh to a filled
+// report: validation, the certified initial map, the mode's policy run by
+// the flow driver, and the report (metrics, area elements, counts).
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_SPHERE_MAP_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_SPHERE_MAP_H
+
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certification.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/density_levels.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/distortion.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow_driver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_certified_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_initial_map.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_paper_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_problem.h>
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace dlf {
+
+/// Validation, then the certified initial map `p`.
+template <class EigenSolver>
+Error_code start_sphere(Sphere_problem& P, std::vector<Vec3>& p, const Discrete_lie_flow_options& opt,
+                        Discrete_lie_flow_report& R)
+{
+  typedef std::chrono::steady_clock Clock;
+  Validation check = validate_sphere_topology(P.xyz.size(), P.faces);
+  if(!check.ok()) return report_failure(R, check.code, check.message);
+  check = validate_sphere_geometry(P, opt.face_density);
+  if(!check.ok()) return report_failure(R, check.code, check.message);
+  const Clock::time_point t0 = Clock::now();
+  const Sphere_initial_outcome init = certified_sphere_initial_map<EigenSolver>(P, p);
+  R.seconds_initial = std::chrono::duration<double>(Clock::now() - t0).count();
+  R.initial_attempts = init.attempts;
+  if(!init.certified) return report_failure(R, ERROR_INITIAL_MAP_FOLDED, init.message);
+  R.puncture_face = init.puncture;
+  R.initial_scale = init.scale;
+  R.face_density = face_densities(P);
+  R.initial_metrics = spherical_distortion(P.xyz, p, P.faces, R.face_density);
+  return OK;
+}
+
+/// Maps the closed genus-0 mesh `P` (`P.target` is filled from the areas and
+/// `opt.face_density`) onto the unit sphere: `points` receives the unit
+/// vectors, in vertex order, only on success. Fills `R`. In paper mode the
+/// flowing triangulation is certified at every step and the caller's
+/// triangles may fold under the result, which is reported, not refused.
+template <class EigenSolver>
+Error_code map_to_sphere(Sphere_problem& P, std::vector<Vec3>& points, const Discrete_lie_flow_options& opt,
+                         EigenSolver& solver, Discrete_lie_flow_report& R)
+{
+  typedef std::chrono::steady_clock Clock;
+  R.vertices = P.xyz.size();
+  R.faces = P.faces.size();
+  std::vector<Vec3> p;
+  const Error_code started = start_sphere<EigenSolver>(P, p, opt, R);
+  if(started != OK) return started;
+
+  const Clock::time_point t1 = Clock::now();
+  Flow_outcome out;
+  if(opt.mode == Discrete_lie_flow_mode::PAPER) {
+    Sphere_paper_flow<EigenSolver> flow(P, p, opt, solver);
+    out = run_flow(flow, opt);
+    R.flowing_non_delaunay_edges = flow.non_delaunay_edges();
+  } else {
+    Sphere_certified_flow<EigenSolver> flow(P, p, opt, solver, Sphere_flow_settings());
+    out = run_flow(flow, opt);
+  }
+  R.seconds_flow = std::chrono::duration<double>(Clock::now() - t1).count();
+  report_area_elements(p, out, [](const std::vector<Vec3>& x, const std::vector<Face>& F, std::vector<double>& u) {
+    signed_areas_sphere(x, F, u);
+  }, R);
+  report_outcome(out, R);
+  R.final_metrics = spherical_distortion(P.xyz, p, P.faces, R.face_density);
+  std::vector<double> flat;
+  signed_areas_sphere(p, P.faces, flat);
+  R.final_share_error = Density_levels(P.xyz, P.faces, P.target).error(flat);
+  const Orientation_count caller = count_orientations_sphere(p, P.faces);
+  R.caller_inverted_faces = caller.inverted + caller.degenerate;
+  const Orientation_count flowing = count_orientations_sphere(p, out.domain_faces);
+  R.flowing_inverted_faces = flowing.inverted + flowing.degenerate;
+  if(!flowing.all_positive()) // cannot happen: the start, every accepted step and every flip are certified
+    return report_failure(R, ERROR_NO_1_TO_1_MAPPING, "the flow produced " + std::to_string(R.flowing_inverted_faces) +
+                                                      " non-positive faces of its triangulation");
+  if(out.iterations == 0 && out.stop_reason == Discrete_lie_flow_stop_reason::STALLED)
+    return report_failure(R, ERROR_FLOW_STALLED, out.solver_failed ? "the linear solver failed on the initial map"
+                                                                   : "no step improves the initial map");
+  points.swap(p);
+  R.status = OK;
+  R.message = "Success";
+  return OK;
+}
+
+} // namespace dlf
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
