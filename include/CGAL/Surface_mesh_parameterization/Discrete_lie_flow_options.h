@@ -14,7 +14,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgSurfaceMeshParameterizationEnums
+/// \ingroup PkgDiscreteLieFlowErrors
 /// Error codes of the Discrete Lie Flow parameterizers, continuing SMP's
 /// `Error_code` (they are returned as `Error_code` values; all fit in its range).
 enum Discrete_lie_flow_error_code
@@ -26,7 +26,7 @@ enum Discrete_lie_flow_error_code
   ERROR_NOT_GENUS_0              ///< a spherical map needs a closed, connected, genus-0 mesh
 };
 
-/// \ingroup PkgSurfaceMeshParameterizationEnums
+/// \ingroup PkgDiscreteLieFlowErrors
 /// The message of any `Error_code` value, including those of the Discrete Lie Flow.
 /// (A `switch`, so that the compiler reports a code without a message.)
 inline const char* discrete_lie_flow_error_message(int code)
@@ -51,6 +51,7 @@ inline const char* discrete_lie_flow_error_message(int code)
   return "Unknown error";
 }
 
+/// \ingroup PkgDiscreteLieFlowErrors
 /// The identifier of an `Error_code` value as used in reports (`"ok"`, `"ERROR_NO_TOPOLOGICAL_DISC"`, ...).
 inline const char* discrete_lie_flow_error_name(int code)
 {
@@ -74,6 +75,7 @@ inline const char* discrete_lie_flow_error_name(int code)
   return "ERROR_UNKNOWN";
 }
 
+/// \ingroup PkgDiscreteLieFlowOptions
 /// Which flow moves the domain vertices.
 enum class Discrete_lie_flow_mode
 {
@@ -87,6 +89,7 @@ enum class Discrete_lie_flow_mode
   PAPER
 };
 
+/// \ingroup PkgDiscreteLieFlowOptions
 /// What the boundary vertices slide on.
 enum class Discrete_lie_flow_border
 {
@@ -96,6 +99,7 @@ enum class Discrete_lie_flow_border
   FREE       ///< the initial boundary polyline (e.g. from LSCM or ARAP)
 };
 
+/// \ingroup PkgDiscreteLieFlowOptions
 /// Why the flow stopped.
 enum class Discrete_lie_flow_stop_reason
 {
@@ -107,6 +111,8 @@ enum class Discrete_lie_flow_stop_reason
   INTERRUPTED     ///< the per-iteration callback asked to stop
 };
 
+/// \ingroup PkgDiscreteLieFlowOptions
+/// The name of a stop reason as used in reports (`"converged"`, `"plateau"`, ...).
 inline const char* stop_reason_name(Discrete_lie_flow_stop_reason r)
 {
   switch(r) {
@@ -120,6 +126,8 @@ inline const char* stop_reason_name(Discrete_lie_flow_stop_reason r)
   return "unknown";
 }
 
+/// \ingroup PkgDiscreteLieFlowOptions
+/// The name of a mode as used in reports (`"certified"`, `"paper"`).
 inline const char* mode_name(Discrete_lie_flow_mode m)
 {
   switch(m) {
@@ -129,6 +137,8 @@ inline const char* mode_name(Discrete_lie_flow_mode m)
   return "unknown";
 }
 
+/// \ingroup PkgDiscreteLieFlowOptions
+/// The name of a border as used in reports (`"automatic"`, `"circle"`, `"square"`, `"free"`).
 inline const char* border_name(Discrete_lie_flow_border b)
 {
   switch(b) {
@@ -140,6 +150,7 @@ inline const char* border_name(Discrete_lie_flow_border b)
   return "unknown";
 }
 
+/// \ingroup PkgDiscreteLieFlowOptions
 /// What one iteration of the flow did; passed to the per-iteration callback.
 struct Discrete_lie_flow_iteration
 {
@@ -154,10 +165,13 @@ struct Discrete_lie_flow_iteration
   double seconds = 0;          ///< elapsed since the flow started
 };
 
+/// \ingroup PkgDiscreteLieFlowOptions
 /// Settings of the Discrete Lie Flow. Defaults are the measured choices.
 struct Discrete_lie_flow_options
 {
+  /// Which flow: certified (the default; the caller's triangles, never folded) or the paper's.
   Discrete_lie_flow_mode mode = Discrete_lie_flow_mode::CERTIFIED;
+  /// What the boundary vertices slide on; `AUTOMATIC` detects it from the initial map.
   Discrete_lie_flow_border border = Discrete_lie_flow_border::AUTOMATIC;
   /// Stop when D_area − 2 ≤ tolerance (D_area ≤ 2.01 by default).
   double tolerance = 1e-2;
@@ -188,6 +202,7 @@ struct Discrete_lie_flow_options
   /// relative amount over `plateau_window` iterations (paper mode: at least
   /// 3e-4, and a slow-tail test besides); 0 turns plateau detection off.
   double plateau_tolerance = 1e-4;
+  /// The number of iterations the plateau test looks back over.
   std::size_t plateau_window = 10;
   /// Paper mode: flip the flowing mesh to Delaunay before each solve.
   bool delaunay_flips = true;
@@ -203,6 +218,7 @@ struct Discrete_lie_flow_options
   /// Stall detector: the same face limits this many consecutive steps while
   /// the step shrinks, or a step needs more than `max_backtracks` halvings.
   std::size_t stall_window = 25;
+  /// The most step halvings an iteration may make before the flow counts as stalled.
   std::size_t max_backtracks = 60;
   /// Fixed step instead of the adaptive one (0: adaptive). For the paper's
   /// Table 2 experiment; a fixed step that would fold is reported as stalled.

@@ -29,34 +29,54 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgSurfaceMeshParameterizationMethods
+/// \ingroup PkgDiscreteLieFlowOptions
 /// What a run of the spherical Discrete Lie Flow did.
 struct Discrete_lie_flow_sphere_report
 {
+  /// `OK`, or the error code that `parameterize()` returned.
   Error_code status = OK;
   std::string message;          ///< one line naming the offending element on error
+  /// Why the flow stopped.
   Discrete_lie_flow_stop_reason stop_reason = Discrete_lie_flow_stop_reason::NOT_RUN;
+  ///@{
+  /// The size of the input mesh.
   std::size_t vertices = 0, faces = 0;
+  ///@}
+  /// The number of accepted iterations.
   std::size_t iterations = 0;
   double initial_d_area = 0;    ///< of the certified initial map (flat triangles between sphere points)
+  /// The area distortion of the result (optimum 2).
   double final_d_area = 0;
   double final_residual = 0;    ///< Σ (A_Ω − A_M)² / (Σ A_Ω)²
   /// The largest error of a region's share of the sphere (density_levels.h,
   /// flat triangles; the measure of `options.share_tolerance`); 0 without a density.
   double final_share_error = 0;
+  ///@{
   /// Faces of the result not positively oriented (exact `orientation(O, p, q, r)`); 0 on success.
   std::size_t inverted_faces = 0, degenerate_faces = 0;
+  ///@}
   std::size_t rejected_by_exact_check = 0; ///< trial steps the doubles accepted and the exact predicate refused
   int puncture_face = -1;       ///< the face of the initial map's north cap (index in face order)
   double initial_scale = 0;     ///< the plane scale of the stereographic lift
   std::size_t initial_attempts = 0; ///< punctures tried before one was certified
+  ///@{
+  /// Numeric factorisations and symbolic analyses of the flow's sparse matrices.
   std::size_t factorizations = 0, symbolic_analyses = 0;
+  ///@}
+  ///@{
+  /// Seconds spent on the initial map and on the flow.
   double seconds_initial = 0, seconds_flow = 0;
+  ///@}
   /// Split of seconds_flow: matrix assembly, factorisation and solve, step search, certification and
   /// the polish's vertex relaxation.
+  ///@{
   double seconds_assembly = 0, seconds_solve = 0, seconds_step = 0;
-  /// The metrics of DESIGN.md of the initial and the final map (valid when status is OK).
+  ///@}
+  ///@{
+  /// The distortion metrics (d_area, ARAP, symmetric Dirichlet, log area ratios, inverted faces,
+  /// smallest angle) of the initial and the final map (valid when status is OK).
   internal::dlf::Distortion_metrics initial_metrics, final_metrics;
+  ///@}
   std::vector<Discrete_lie_flow_iteration> history; ///< when options.record_history
   /// Paper mode: there `inverted_faces` and `degenerate_faces` count the
   /// caller's triangles folded under the result (the mode's documented
@@ -69,11 +89,14 @@ struct Discrete_lie_flow_sphere_report
   /// (0 except with flips off, or when the last flips were undone because
   /// they raised D_area: starts compressed to the rounding level).
   std::size_t flips = 0;
+  ///@{
+  /// Paper mode: see `flips`.
   std::size_t flowing_inverted_faces = 0, flowing_non_delaunay_edges = 0;
   std::vector<std::array<int, 3> > flowing_faces;
+  ///@}
 };
 
-/// \ingroup PkgSurfaceMeshParameterizationMethods
+/// \ingroup PkgDiscreteLieFlowParameterizers
 ///
 /// Area-preserving (or density-prescribed) map of a closed genus-0 triangle
 /// mesh onto the unit sphere by the Discrete Lie Flow on the sphere.
@@ -108,20 +131,34 @@ template <class TriangleMesh_, class SolverTraits_ = Default>
 class Discrete_lie_flow_sphere_parameterizer_3
 {
 public:
+  /// \name Types
+  /// @{
+
+  /// The mesh type, `TriangleMesh_`.
   typedef TriangleMesh_ Triangle_mesh;
+  /// The solver traits of the flow's sparse SPD systems.
   typedef typename Default::Get<SolverTraits_,
     Eigen_solver_traits<internal::dlf::Default_spd_solver> >::type Solver_traits;
+  /// Vertex descriptor of the mesh.
   typedef typename boost::graph_traits<Triangle_mesh>::vertex_descriptor vertex_descriptor;
+  /// Face descriptor of the mesh.
   typedef typename boost::graph_traits<Triangle_mesh>::face_descriptor face_descriptor;
+  /// Halfedge descriptor of the mesh.
   typedef typename boost::graph_traits<Triangle_mesh>::halfedge_descriptor halfedge_descriptor;
 
+  /// @}
+
+  /// \param options flow settings (mode, tolerances, caps, density, callback)
+  /// \param solver_traits the sparse SPD solver
   explicit Discrete_lie_flow_sphere_parameterizer_3(const Discrete_lie_flow_options& options = Discrete_lie_flow_options(),
                                                     Solver_traits solver_traits = Solver_traits())
     : m_options(options), m_solver_traits(solver_traits),
       m_report(std::make_shared<Discrete_lie_flow_sphere_report>())
   {}
 
+  /// The flow settings, to read or change before `parameterize()`.
   Discrete_lie_flow_options& options() { return m_options; }
+  /// The flow settings.
   const Discrete_lie_flow_options& options() const { return m_options; }
 
   /// The report of the last run (shared by all copies of this object).
@@ -300,7 +337,7 @@ private:
   }
 };
 
-/// \ingroup PkgSurfaceMeshParameterizationMethods
+/// \ingroup PkgDiscreteLieFlowParameterizers
 /// Maps the closed genus-0 triangle mesh `mesh` onto the unit sphere with
 /// the spherical Discrete Lie Flow (see `Discrete_lie_flow_sphere_parameterizer_3`);
 /// `sphere_map` receives unit vectors on success. Returns the report, whose

@@ -18,7 +18,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgSurfaceMeshParameterizationHelperFunctions
+/// \ingroup PkgDiscreteLieFlowHelperFunctions
 ///
 /// Chooses the four corners of a square border so that no triangle gets all
 /// three vertices on one side of the square. An *ear* (a border vertex with a
