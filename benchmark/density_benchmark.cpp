@@ -113,7 +113,7 @@ static Run run(SM& mesh, SM::Halfedge_index bhd, const std::vector<face_descript
     walls.push_back(seconds_since(t0));
     cpus.push_back(cpu_now() - c0);
     r.iterations = dlf.report().iterations;
-    r.stop = SMP::stop_reason_name(dlf.report().stop_reason);
+    r.stop = SMP::discrete_lie_flow_stop_reason_name(dlf.report().stop_reason);
     r.d_area = dlf.report().final_d_area;
     if(r.status != SMP::OK) break;
   }

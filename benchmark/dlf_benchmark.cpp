@@ -334,7 +334,7 @@ static json run_method(int method, const Mesh_case& c, const SMP::Discrete_lie_f
   if(r.has_report) {
     const SMP::Discrete_lie_flow_report& R = r.report;
     j["iterations"] = R.iterations;
-    j["stop_reason"] = SMP::stop_reason_name(R.stop_reason);
+    j["stop_reason"] = SMP::discrete_lie_flow_stop_reason_name(R.stop_reason);
     j["message"] = R.message;
     j["seconds_initial"] = R.seconds_initial;
     j["seconds_flow"] = R.seconds_flow;
@@ -479,7 +479,7 @@ int main(int argc, char** argv)
   doc["command"] = [&] { std::string s; for(int i = 0; i < argc; ++i) s += (i ? " " : "") + std::string(argv[i]); return s; }();
   doc["settings"] = { { "slow_face_limit", slow_limit }, { "repeats", repeats }, { "repeat_below", repeat_below },
                       { "table2_cap", table2_cap }, { "table2_tolerance", table2_tolerance }, { "timing", "wall time of parameterize(), median of repeats below repeat_below faces" },
-#ifdef DLF_USE_CHOLMOD
+#ifdef CGAL_DLF_USE_CHOLMOD
                       { "dlf_solver", "CHOLMOD supernodal LLT" },
 #else
                       { "dlf_solver", "Eigen SimplicialLDLT" },

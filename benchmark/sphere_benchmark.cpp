@@ -177,7 +177,7 @@ static json run_sphere(const SM& mesh)
   j["seconds_solve"] = R.seconds_solve;
   j["seconds_step"] = R.seconds_step;
   j["iterations"] = R.iterations;
-  j["stop_reason"] = SMP::stop_reason_name(R.stop_reason);
+  j["stop_reason"] = SMP::discrete_lie_flow_stop_reason_name(R.stop_reason);
   j["initial_attempts"] = R.initial_attempts;
   j["puncture_face"] = R.puncture_face;
   j["initial_scale"] = R.initial_scale;
@@ -322,7 +322,7 @@ int main(int argc, char** argv)
                       { "goals", { { "status", "ok" }, { "inverted_faces", 0 }, { "d_area_max", goal_d_area },
                                    { "log_area_mean_abs_max", goal_log_area_mean }, { "stop_reason", "converged" },
                                    { "speed_mesh", speed_mesh }, { "speed_seconds_max", goal_speed_seconds } } },
-#ifdef DLF_USE_CHOLMOD
+#ifdef CGAL_DLF_USE_CHOLMOD
                       { "solver", "CHOLMOD supernodal LLT" },
 #else
                       { "solver", "Eigen SimplicialLDLT" },

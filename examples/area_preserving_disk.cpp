@@ -68,6 +68,6 @@ int main(int argc, char** argv)
   const SMP::Discrete_lie_flow_report& report = parameterizer.report();
   std::cout << filename << ": " << num_vertices(sm) << " vertices, area distortion " << report.initial_d_area
             << " -> " << report.final_d_area << " (optimum 2) in " << report.iterations << " iterations ("
-            << SMP::stop_reason_name(report.stop_reason) << ")" << std::endl;
+            << SMP::discrete_lie_flow_stop_reason_name(report.stop_reason) << ")" << std::endl;
   return EXIT_SUCCESS;
 }

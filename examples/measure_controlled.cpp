@@ -143,7 +143,7 @@ int main(int argc, char** argv)
     all_reached = all_reached && std::abs(error) <= 0.01;
     if(factor == 1.) plain_iterations = report.iterations; // ρ ≡ 1: the area-preserving run
     std::printf("%7.2f  %10.5f  %8.5f  %+7.3f  %10zu  %-9s  %8zu  %7.2f  %4.2fx\n", factor, share.second, share.first,
-                100 * error, report.iterations, SMP::stop_reason_name(report.stop_reason), report.caller_inverted_faces,
+                100 * error, report.iterations, SMP::discrete_lie_flow_stop_reason_name(report.stop_reason), report.caller_inverted_faces,
                 report.seconds_initial + report.seconds_flow, double(report.iterations) / double(plain_iterations));
     std::fflush(stdout);
 

@@ -130,7 +130,7 @@ Flow_run flow(Loaded& m, double tolerance, Setup setup)
   r.code = SMP::parameterize(m.sm, dlf, m.bhd, uv);
   r.iterations = dlf.report().iterations;
   r.d_area = dlf.report().final_d_area;
-  r.stop = SMP::stop_reason_name(dlf.report().stop_reason);
+  r.stop = SMP::discrete_lie_flow_stop_reason_name(dlf.report().stop_reason);
   r.message = dlf.report().message;
   for(SM_vertex v : vertices(m.sm)) r.uv.push_back(get(uv, v));
   return r;
@@ -217,7 +217,7 @@ TEST(DensityRegions, ShareToleranceHoldsTheRegionsOfAFinerMesh)
     for(double share_tolerance : { 0., 5e-3 }) {
       SMP::Discrete_lie_flow_options options;
       options.tolerance = Density_tolerance;
-      options.share_tolerance = share_tolerance;
+      options.certified.share_tolerance = share_tolerance;
       Dlf dlf(Dlf::Initial_parameterizer(), options);
       dlf.set_face_density(rho);
       ASSERT_EQ(SMP::parameterize(m.sm, dlf, m.bhd, uv), SMP::OK) << dlf.report().message;
@@ -226,7 +226,7 @@ TEST(DensityRegions, ShareToleranceHoldsTheRegionsOfAFinerMesh)
       const double error = std::abs(s.first - s.second) / (std::min)(s.second, 1 - s.second);
       std::printf("  nefertiti+loop1 factor %4.2f share tolerance %g: %+.3f%%, %zu iterations (%s)\n", factor,
                   share_tolerance, 100 * (s.first - s.second) / s.second, dlf.report().iterations,
-                  SMP::stop_reason_name(dlf.report().stop_reason));
+                  SMP::discrete_lie_flow_stop_reason_name(dlf.report().stop_reason));
       // One jump, one cut: the report's error is the region's.
       EXPECT_NEAR(dlf.report().final_share_error, error, 1e-9);
       if(share_tolerance == 0) { worst_without = (std::max)(worst_without, error); continue; }

@@ -731,7 +731,7 @@ TEST(Paper_consistency, ConvergedMapIsWithinTolerance)
     const Flow_run r = run_dlf<Circle_dlf>(sm, Circle_init(), o);
     ASSERT_EQ(r.code, SMP::OK) << r.report.message;
     EXPECT_EQ(r.report.stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED)
-      << "stop reason " << SMP::stop_reason_name(r.report.stop_reason) << ", tolerance " << tolerance;
+      << "stop reason " << SMP::discrete_lie_flow_stop_reason_name(r.report.stop_reason) << ", tolerance " << tolerance;
     std::vector<Tri> dom(r.report.domain_faces.begin(), r.report.domain_faces.end());
     const double d = d_area(r.mesh.xyz, r.uv, dom);
     EXPECT_NEAR(d, r.report.final_d_area, 1e-3 * d);
@@ -755,12 +755,12 @@ TEST(Paper_fixed_connectivity, Mushroom)
   SM sm;
   ASSERT_TRUE(read_mesh("mushroom", sm));
   SMP::Discrete_lie_flow_options o = paper_options();
-  o.delaunay_flips = false;
+  o.paper.delaunay_flips = false;
   const Flow_run r = run_dlf<Circle_dlf>(sm, Circle_init(), o);
   ASSERT_EQ(r.code, SMP::OK) << r.report.message;
   // Measured: converged after 5 iterations (the paper's step: 9.54, stalled).
   EXPECT_EQ(r.report.stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED)
-    << "stop reason " << SMP::stop_reason_name(r.report.stop_reason) << " after " << r.report.iterations << " iterations";
+    << "stop reason " << SMP::discrete_lie_flow_stop_reason_name(r.report.stop_reason) << " after " << r.report.iterations << " iterations";
   EXPECT_LE(r.report.final_d_area, 2 + o.tolerance);
   EXPECT_LT(r.report.iterations, o.max_iterations);
   // Without flips the flowing triangulation is the caller's.

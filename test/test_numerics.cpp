@@ -839,7 +839,7 @@ TEST(Paper_step, PoissonStepLowersTheAreaMismatch_PaperFlow)
     opt.mode = SMP::Discrete_lie_flow_mode::PAPER;
     opt.max_iterations = 1;
     opt.fixed_step = step;
-    opt.delaunay_flips = false;
+    opt.paper.delaunay_flips = false;
     opt.record_history = true;
     Eigen::SimplicialLDLT<D::Sparse_matrix, Eigen::Lower> solver;
     std::vector<Face> flowing;
@@ -922,14 +922,14 @@ TEST(Paper_stall, PlainStepFixedConnectivityMushroom)
   D::Boundary_curve curve(loop, SMP::Discrete_lie_flow_border::CIRCLE);
   SMP::Discrete_lie_flow_options opt;
   opt.mode = SMP::Discrete_lie_flow_mode::PAPER;
-  opt.delaunay_flips = false;
+  opt.paper.delaunay_flips = false;
   opt.record_history = true;
   Eigen::SimplicialLDLT<D::Sparse_matrix, Eigen::Lower> solver;
   std::vector<Face> flowing;
   const D::Flow_outcome out = D::paper_disk_flow(T.P, uv, curve, opt, solver, flowing, D::Paper_flow_settings::plain());
   EXPECT_TRUE(out.stop_reason == SMP::Discrete_lie_flow_stop_reason::STALLED ||
               out.stop_reason == SMP::Discrete_lie_flow_stop_reason::PLATEAU)
-    << "stop reason " << SMP::stop_reason_name(out.stop_reason) << " after " << out.iterations << " iterations";
+    << "stop reason " << SMP::discrete_lie_flow_stop_reason_name(out.stop_reason) << " after " << out.iterations << " iterations";
   EXPECT_LT(out.iterations, opt.max_iterations);
   EXPECT_GT(out.final_d_area, 2 + opt.tolerance) << "the paper's step no longer stalls here: the test is blind";
   EXPECT_TRUE(flowing == T.P.faces);

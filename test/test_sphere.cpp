@@ -599,10 +599,10 @@ void check_sphere_map(const Sphere_case& c, const SM& sm)
   }
   if(c.converges) {
     EXPECT_EQ(r.stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED);
-    EXPECT_LE(d.second, SMP::Discrete_lie_flow_options().log_area_tolerance);
+    EXPECT_LE(d.second, SMP::Discrete_lie_flow_options().sphere.log_area_tolerance);
   }
   std::cout << "[sphere] " << c.name << ": " << m.faces.size() << " faces, start d_area " << r.initial_d_area
-            << ", " << r.iterations << " iterations (" << SMP::stop_reason_name(r.stop_reason) << "), d_area "
+            << ", " << r.iterations << " iterations (" << SMP::discrete_lie_flow_stop_reason_name(r.stop_reason) << "), d_area "
             << d.first << ", mean |log r| " << d.second << ", inverted " << s.neg + s.zero << ", " << seconds << " s"
             << std::endl;
 }

@@ -315,7 +315,7 @@ void check_paper_map(const std::string& name, double max_d_area, bool flips = tr
   const std::size_t caller = non_positive_faces(run.p, run.faces);
   EXPECT_EQ(R.caller_inverted_faces, caller);
   std::cout << "[sphere paper] " << name << ": " << run.faces.size() << " faces, " << R.iterations << " iterations ("
-            << SMP::stop_reason_name(R.stop_reason) << "), d_area " << R.initial_d_area << " -> " << D_flow
+            << SMP::discrete_lie_flow_stop_reason_name(R.stop_reason) << "), d_area " << R.initial_d_area << " -> " << D_flow
             << " (flowing), flips " << R.flips << ", caller folds " << caller << ", " << run.seconds << " s" << std::endl;
 }
 
@@ -332,7 +332,7 @@ TEST(Sphere_paper_map, Cow) { check_paper_map("cow", 11); }
 TEST(Sphere_paper_map, WithoutFlipsTheInputTriangulationFlows)
 {
   SMP::Discrete_lie_flow_options o;
-  o.delaunay_flips = false;
+  o.paper.delaunay_flips = false;
   const Paper_run run = run_paper("blobby", o);
   const SMP::Discrete_lie_flow_report& R = run.report;
   ASSERT_EQ(R.status, SMP::OK) << R.message;

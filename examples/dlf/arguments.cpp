@@ -252,7 +252,7 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
      "belongs to the k-th --roi or --roi-ball, and overlapping regions multiply")
     ("band", po::value<double>(&s.band)->value_name("W"),
      "width (3D length, along edges) of a transition from each region's factor to 1 around it")
-    ("share-tolerance", po::value<double>(&s.options.share_tolerance)->value_name("X")->default_value(s.options.share_tolerance),
+    ("share-tolerance", po::value<double>(&s.options.certified.share_tolerance)->value_name("X")->default_value(s.options.certified.share_tolerance),
      "with a density, certified mode: converged also needs every region of the density (every set of faces below or above "
      "a density value) within X of its prescribed share of the domain area, relative (0: d_area alone decides)")
     ("history", "add the per-iteration history to the report")
@@ -294,7 +294,7 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
   if(!s.density_file.empty() && !s.regions.empty()) throw Cli_error("--density and --roi/--roi-ball exclude each other");
   if(vm.count("band") && s.regions.empty()) throw Cli_error("--band applies to --roi and --roi-ball only");
   if(!(s.band >= 0) || !std::isfinite(s.band)) throw Cli_error("--band must be a number >= 0");
-  if(!(s.options.share_tolerance >= 0) || !std::isfinite(s.options.share_tolerance))
+  if(!(s.options.certified.share_tolerance >= 0) || !std::isfinite(s.options.certified.share_tolerance))
     throw Cli_error("--share-tolerance must be a number >= 0");
   if(s.has_density() && vm["tolerance"].defaulted()) tolerance = density_tolerance;
   if(s.mode != "paper") {
@@ -304,13 +304,13 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
 
   SMP::Discrete_lie_flow_options& opt = s.options;
   opt.mode = s.mode == "paper" ? SMP::Discrete_lie_flow_mode::PAPER : SMP::Discrete_lie_flow_mode::CERTIFIED;
-  opt.border = s.border == "circle" ? SMP::Discrete_lie_flow_border::CIRCLE
+  opt.disk.border = s.border == "circle" ? SMP::Discrete_lie_flow_border::CIRCLE
              : s.border == "square" ? SMP::Discrete_lie_flow_border::SQUARE : SMP::Discrete_lie_flow_border::FREE;
   opt.tolerance = tolerance;
   opt.mu = mu;
   opt.max_iterations = std::size_t(max_iterations);
-  opt.lump_targets_on_flowing_faces = vm.count("literal-targets") == 0;
-  opt.delaunay_flips = vm.count("no-flips") == 0;
+  opt.paper.lump_targets_on_flowing_faces = vm.count("literal-targets") == 0;
+  opt.paper.delaunay_flips = vm.count("no-flips") == 0;
   s.history_in_report = vm.count("history") != 0;
   opt.record_history = s.history_in_report || !s.convergence_svg.empty();
   return true;

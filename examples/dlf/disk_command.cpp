@@ -34,7 +34,7 @@ using json = nlohmann::ordered_json;
 // The border the flow used; the requested one if the flow did not start.
 std::string used_border(const Disk_run& run, const Disk_settings& s)
 {
-  return run.report.border == SMP::Discrete_lie_flow_border::AUTOMATIC ? s.border : SMP::border_name(run.report.border);
+  return run.report.border == SMP::Discrete_lie_flow_border::AUTOMATIC ? s.border : SMP::discrete_lie_flow_border_name(run.report.border);
 }
 
 // The parameterizer's codes that blame the input rather than the flow (exit
@@ -108,7 +108,7 @@ json make_report(const Disk_settings& s, const Indexed_mesh& mesh, const Disk_ru
   j["vertices"] = mesh.xyz.size();
   j["faces"] = mesh.faces.size();
   j["iterations"] = R.iterations;
-  j["stop_reason"] = SMP::stop_reason_name(R.stop_reason);
+  j["stop_reason"] = SMP::discrete_lie_flow_stop_reason_name(R.stop_reason);
   j["seconds"] = { { "initial", R.seconds_initial }, { "flow", R.seconds_flow }, { "total", run.seconds },
                    { "pictures", picture_seconds } };
   j["initial"] = initial ? metrics_to_json(*initial) : json(nullptr);
@@ -123,11 +123,11 @@ json make_report(const Disk_settings& s, const Indexed_mesh& mesh, const Disk_ru
   j["domain_d_area"] = R.final_d_area;
   j["final_residual"] = R.final_residual;
   j["rejected_by_exact_check"] = R.rejected_by_exact_check;
-  j["options"] = { { "tolerance", s.options.tolerance }, { "share_tolerance", s.options.share_tolerance },
+  j["options"] = { { "tolerance", s.options.tolerance }, { "share_tolerance", s.options.certified.share_tolerance },
                    { "max_iterations", s.options.max_iterations },
                    { "mu", s.options.mu > 0 ? json(s.options.mu) : json(nullptr) }, // null: the mode's default
-                   { "literal_targets", !s.options.lump_targets_on_flowing_faces },
-                   { "delaunay_flips", s.options.delaunay_flips } };
+                   { "literal_targets", !s.options.paper.lump_targets_on_flowing_faces },
+                   { "delaunay_flips", s.options.paper.delaunay_flips } };
   // Metrics above are density-weighted (doc/design.md) when a density is given.
   j["density"] = density_json(s, density);
   if(density.source != "none") j["density"]["share_error"] = R.final_share_error; // density_levels.h
@@ -146,7 +146,7 @@ void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh
   out << "dlf disk " << s.input << ": " << mesh.xyz.size() << " vertices, " << mesh.faces.size() << " faces\n"
       << "  mode " << s.mode << ", init " << s.init << ", border " << used_border(run, s) << "\n"
       << "  status " << SMP::discrete_lie_flow_error_name(run.status) << ": " << R.message << "\n"
-      << "  iterations " << R.iterations << " (" << SMP::stop_reason_name(R.stop_reason) << ")\n";
+      << "  iterations " << R.iterations << " (" << SMP::discrete_lie_flow_stop_reason_name(R.stop_reason) << ")\n";
   if(initial) {
     out << "  d_area " << initial->d_area;
     if(final_metrics) out << " -> " << final_metrics->d_area;
@@ -243,7 +243,7 @@ int disk_command(const std::vector<std::string>& args)
     if(ok && !(std::abs(r.relative_error()) <= region_share_tolerance))
       std::cerr << "dlf: warning: region " << r.name << " got " << r.achieved << " of the domain area, prescribed "
                 << r.prescribed << " (" << std::showpos << std::setprecision(3) << 100 * r.relative_error() << std::noshowpos
-                << "%): the flow stopped (" << SMP::stop_reason_name(run.report.stop_reason) << ") after "
+                << "%): the flow stopped (" << SMP::discrete_lie_flow_stop_reason_name(run.report.stop_reason) << ") after "
                 << run.report.iterations << " iterations; " << share_hint(run.report.stop_reason) << "\n";
   if(!ok)
     throw Cli_error(s.input + ": " + SMP::discrete_lie_flow_error_name(run.status) + ": " + run.report.message,

@@ -54,7 +54,7 @@ Disk_run run_with_border(const Indexed_mesh& mesh, const Disk_settings& settings
 Disk_run run_disk_fixed_border(const Indexed_mesh& mesh, const Disk_settings& settings)
 {
   // --border free keeps the circle of the initial map and lets the flow
-  // slide the border along that polygon (options.border is FREE).
+  // slide the border along that polygon (options.disk.border is FREE).
   if(settings.border == "square")
     return run_with_border<Square_border_with_ear_corners>(mesh, settings);
   return run_with_border<SMP::Circular_border_arc_length_parameterizer_3<Surface_mesh> >(mesh, settings);

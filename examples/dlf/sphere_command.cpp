@@ -87,9 +87,9 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
     ("plot-histogram", po::value<std::string>(&s.histogram_svg)->value_name("PLOT.svg"),
      "histogram of the per-face log area ratios of the result")
     ("tolerance", po::value<double>(&s.options.tolerance), "stop when d_area - 2 <= this (default 0.01) ...")
-    ("log-area-tolerance", po::value<double>(&s.options.log_area_tolerance),
+    ("log-area-tolerance", po::value<double>(&s.options.sphere.log_area_tolerance),
      "... and the mean |log area ratio| <= this (default 0.02; 0: d_area alone decides)")
-    ("share-tolerance", po::value<double>(&s.options.share_tolerance),
+    ("share-tolerance", po::value<double>(&s.options.certified.share_tolerance),
      "... and, with a density, every region of it within this of its share of the sphere, relative "
      "(default 0.005; 0: no such test)")
     ("max-iterations", po::value<std::size_t>(&s.options.max_iterations), "iteration cap (default 500)")
@@ -139,8 +139,8 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
   if(inputs.size() != 1) throw Cli_error("dlf sphere needs exactly one INPUT mesh (see 'dlf sphere --help')");
   s.input = inputs[0];
   if(!(s.options.tolerance >= 0)) throw Cli_error("--tolerance must be >= 0");
-  if(!(s.options.log_area_tolerance >= 0)) throw Cli_error("--log-area-tolerance must be >= 0");
-  if(!(s.options.share_tolerance >= 0) || !std::isfinite(s.options.share_tolerance))
+  if(!(s.options.sphere.log_area_tolerance >= 0)) throw Cli_error("--log-area-tolerance must be >= 0");
+  if(!(s.options.certified.share_tolerance >= 0) || !std::isfinite(s.options.certified.share_tolerance))
     throw Cli_error("--share-tolerance must be a number >= 0");
   if(vm.count("mu") && !(s.options.mu > 0 && s.options.mu < 1)) throw Cli_error("--mu must be in (0, 1)");
   if(s.mode != "certified" && s.mode != "paper")
@@ -150,8 +150,8 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
     if(vm.count("no-flips")) throw Cli_error("--no-flips applies to --mode paper only");
   }
   s.options.mode = s.mode == "paper" ? SMP::Discrete_lie_flow_mode::PAPER : SMP::Discrete_lie_flow_mode::CERTIFIED;
-  s.options.lump_targets_on_flowing_faces = vm.count("literal-targets") == 0;
-  s.options.delaunay_flips = vm.count("no-flips") == 0;
+  s.options.paper.lump_targets_on_flowing_faces = vm.count("literal-targets") == 0;
+  s.options.paper.delaunay_flips = vm.count("no-flips") == 0;
   if(vm.count("quiet") && vm.count("verbose")) throw Cli_error("--quiet and --verbose exclude each other");
   if(vm.count("quiet")) s.verbosity = Verbosity::QUIET;
   if(vm.count("verbose")) s.verbosity = Verbosity::VERBOSE;
@@ -276,14 +276,14 @@ int sphere_command(const std::vector<std::string>& args)
     j["vertices"] = input.xyz.size();
     j["faces"] = input.faces.size();
     j["iterations"] = R.iterations;
-    j["stop_reason"] = SMP::stop_reason_name(R.stop_reason);
+    j["stop_reason"] = SMP::discrete_lie_flow_stop_reason_name(R.stop_reason);
     j["seconds"] = { { "initial", R.seconds_initial }, { "flow", R.seconds_flow }, { "total", total } };
-    j["options"] = { { "tolerance", s.options.tolerance }, { "log_area_tolerance", s.options.log_area_tolerance },
-                     { "share_tolerance", s.options.share_tolerance },
+    j["options"] = { { "tolerance", s.options.tolerance }, { "log_area_tolerance", s.options.sphere.log_area_tolerance },
+                     { "share_tolerance", s.options.certified.share_tolerance },
                      { "max_iterations", s.options.max_iterations },
                      { "mu", s.options.mu > 0 ? json(s.options.mu) : json(nullptr) }, // null: the default
-                     { "literal_targets", !s.options.lump_targets_on_flowing_faces },
-                     { "delaunay_flips", s.options.delaunay_flips } };
+                     { "literal_targets", !s.options.paper.lump_targets_on_flowing_faces },
+                     { "delaunay_flips", s.options.paper.delaunay_flips } };
     // As `dlf disk`: "final" is measured on the input triangles; the flowing
     // triangulation (flipped in paper mode) has its own fields.
     j["mode"] = s.mode;
@@ -335,7 +335,7 @@ int sphere_command(const std::vector<std::string>& args)
               << input.faces.size() << " faces\n"
               << "  status " << SMP::discrete_lie_flow_error_name(status) << ": " << R.message << "\n";
     if(ok) {
-      std::cout << "  iterations " << R.iterations << " (" << SMP::stop_reason_name(R.stop_reason) << ")\n"
+      std::cout << "  iterations " << R.iterations << " (" << SMP::discrete_lie_flow_stop_reason_name(R.stop_reason) << ")\n"
                 << "  d_area " << R.initial_metrics.d_area << " -> " << R.final_metrics.d_area << " (optimum 2)\n"
                 << "  inverted faces " << R.final_metrics.inverted_faces << "\n";
       if(s.mode == "paper")

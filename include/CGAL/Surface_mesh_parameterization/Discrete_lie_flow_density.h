@@ -9,6 +9,8 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_DENSITY_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_DENSITY_H
 
+#include <CGAL/license/Surface_mesh_parameterization.h>
+
 #include <CGAL/Surface_mesh_parameterization/internal/kernel_traits.h>
 #include <CGAL/Kernel/global_functions.h>
 #include <CGAL/squared_distance_3.h>
@@ -89,7 +91,7 @@ inline double blended_density(double factor, double distance, double band)
 } // namespace dlf
 } // namespace internal
 
-/// \ingroup PkgSurfaceMeshParameterizationHelperFunctions
+/// \ingroup PkgDiscreteLieFlowHelperFunctions
 /// Sets ρ = `factor` on the faces of `region` and 1 elsewhere; with
 /// `band` > 0, faces within edge-path distance `band` of the region (from
 /// their nearest vertex, in 3D length units) blend geometrically from
@@ -120,7 +122,7 @@ void set_region_density(const TriangleMesh& mesh, const FaceRange& region, doubl
   }
 }
 
-/// \ingroup PkgSurfaceMeshParameterizationHelperFunctions
+/// \ingroup PkgDiscreteLieFlowHelperFunctions
 /// The faces whose centroid satisfies `inside(centroid)` (any predicate on
 /// a `Point_3`, for example a half-space or a box).
 template <class TriangleMesh, class Predicate>
@@ -133,7 +135,7 @@ faces_where(const TriangleMesh& mesh, Predicate inside)
   return out;
 }
 
-/// \ingroup PkgSurfaceMeshParameterizationHelperFunctions
+/// \ingroup PkgDiscreteLieFlowHelperFunctions
 /// The faces whose centroid lies in the Euclidean ball of `center` and `radius`.
 template <class TriangleMesh, class Point_3>
 std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>
@@ -144,7 +146,7 @@ faces_in_ball(const TriangleMesh& mesh, const Point_3& center, double radius)
   });
 }
 
-/// \ingroup PkgSurfaceMeshParameterizationHelperFunctions
+/// \ingroup PkgDiscreteLieFlowHelperFunctions
 /// The faces whose three vertices lie within edge-path distance `radius` of
 /// vertex `center` (a geodesic ball along the edges; exact geodesics differ
 /// by the zig-zag factor of the mesh, at most 2/√3 on regular triangulations).
@@ -163,7 +165,7 @@ faces_in_geodesic_ball(const TriangleMesh& mesh,
   return out;
 }
 
-/// \ingroup PkgSurfaceMeshParameterizationHelperFunctions
+/// \ingroup PkgDiscreteLieFlowHelperFunctions
 /// Achieved and prescribed shares of the domain area of a region: the sum of
 /// its faces' domain areas over the total, against the sum of ρ·area over
 /// the total. `uvmap` maps vertices to `Point_2`, `density` faces to ρ.

@@ -4,6 +4,8 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_DISTORTION_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_DISTORTION_H
 
+#include <CGAL/license/Surface_mesh_parameterization.h>
+
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/distortion.h>
 
@@ -18,7 +20,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgSurfaceMeshParameterizationMethods
+/// \ingroup PkgDiscreteLieFlowParameterizers
 /// The distortion metrics (doc/design.md, "Metrics") of the planar map `uv`
 /// of the triangles `faces` over the points `xyz`, in index form; inverted
 /// faces are counted with the exact predicate. `face_density` (per face,
@@ -33,7 +35,7 @@ discrete_lie_flow_distortion(const std::vector<std::array<double, 3> >& xyz,
   return internal::dlf::planar_distortion(xyz, uv, faces, face_density);
 }
 
-/// \ingroup PkgSurfaceMeshParameterizationMethods
+/// \ingroup PkgDiscreteLieFlowParameterizers
 /// The same metrics for a map onto the unit sphere: the domain triangles are
 /// the flat triangles between the points `sphere`.
 inline Discrete_lie_flow_distortion
@@ -76,7 +78,7 @@ void indexed_map(const TriangleMesh& mesh, VertexMap map, std::vector<Vec3>& xyz
 } // namespace dlf
 } // namespace internal
 
-/// \ingroup PkgSurfaceMeshParameterizationMethods
+/// \ingroup PkgDiscreteLieFlowParameterizers
 /// The distortion metrics of the planar map `uvmap` (`vertex_descriptor` →
 /// a 2D point) of the triangle mesh `mesh`, e.g. the result of any
 /// parameterizer of this package or of CGAL's.
@@ -86,14 +88,14 @@ Discrete_lie_flow_distortion discrete_lie_flow_distortion(const TriangleMesh& me
 {
   std::vector<internal::dlf::Vec3> xyz;
   std::vector<internal::dlf::Vec2> uv;
-  std::vector<internal::dlf::Face> faces;
-  internal::dlf::indexed_map(mesh, uvmap, xyz, uv, faces, [](const auto& p) {
+  std::vector<internal::dlf::Face> tris;
+  internal::dlf::indexed_map(mesh, uvmap, xyz, uv, tris, [](const auto& p) {
     return internal::dlf::Vec2{{ CGAL::to_double(p.x()), CGAL::to_double(p.y()) }};
   });
-  return internal::dlf::planar_distortion(xyz, uv, faces);
+  return internal::dlf::planar_distortion(xyz, uv, tris);
 }
 
-/// \ingroup PkgSurfaceMeshParameterizationMethods
+/// \ingroup PkgDiscreteLieFlowParameterizers
 /// The same for a measure-controlled map: `face_density` (`face_descriptor`
 /// → number ρ > 0) weighs the input areas as the flow's targets do.
 template <class TriangleMesh, class VertexUVMap, class FaceDensityMap>
@@ -102,16 +104,16 @@ Discrete_lie_flow_distortion discrete_lie_flow_distortion(const TriangleMesh& me
 {
   std::vector<internal::dlf::Vec3> xyz;
   std::vector<internal::dlf::Vec2> uv;
-  std::vector<internal::dlf::Face> faces;
-  internal::dlf::indexed_map(mesh, uvmap, xyz, uv, faces, [](const auto& p) {
+  std::vector<internal::dlf::Face> tris;
+  internal::dlf::indexed_map(mesh, uvmap, xyz, uv, tris, [](const auto& p) {
     return internal::dlf::Vec2{{ CGAL::to_double(p.x()), CGAL::to_double(p.y()) }};
   });
   std::vector<double> rho;
   for(typename boost::graph_traits<TriangleMesh>::face_descriptor f : faces(mesh)) rho.push_back(double(get(face_density, f)));
-  return internal::dlf::planar_distortion(xyz, uv, faces, rho);
+  return internal::dlf::planar_distortion(xyz, uv, tris, rho);
 }
 
-/// \ingroup PkgSurfaceMeshParameterizationMethods
+/// \ingroup PkgDiscreteLieFlowParameterizers
 /// The distortion metrics of the map `sphere_map` (`vertex_descriptor` → a
 /// 3D point on the unit sphere) of the closed triangle mesh `mesh`.
 /// \pre `mesh` is a triangle mesh.
@@ -119,11 +121,11 @@ template <class TriangleMesh, class VertexSphereMap>
 Discrete_lie_flow_distortion discrete_lie_flow_sphere_distortion(const TriangleMesh& mesh, VertexSphereMap sphere_map)
 {
   std::vector<internal::dlf::Vec3> xyz, sphere;
-  std::vector<internal::dlf::Face> faces;
-  internal::dlf::indexed_map(mesh, sphere_map, xyz, sphere, faces, [](const auto& p) {
+  std::vector<internal::dlf::Face> tris;
+  internal::dlf::indexed_map(mesh, sphere_map, xyz, sphere, tris, [](const auto& p) {
     return internal::dlf::Vec3{{ CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) }};
   });
-  return internal::dlf::spherical_distortion(xyz, sphere, faces);
+  return internal::dlf::spherical_distortion(xyz, sphere, tris);
 }
 
 } // namespace Surface_mesh_parameterization

@@ -4,6 +4,9 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_OPTIONS_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_OPTIONS_H
 
+#include <CGAL/license/Surface_mesh_parameterization.h>
+
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_version.h>
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 
 #include <cstddef>
@@ -14,7 +17,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgSurfaceMeshParameterizationEnums
+/// \ingroup PkgDiscreteLieFlowErrors
 /// Error codes of the Discrete Lie Flow parameterizers, continuing SMP's
 /// `Error_code` (they are returned as `Error_code` values; all fit in its range).
 enum Discrete_lie_flow_error_code
@@ -26,7 +29,7 @@ enum Discrete_lie_flow_error_code
   ERROR_NOT_GENUS_0              ///< a spherical map needs a closed, connected, genus-0 mesh
 };
 
-/// \ingroup PkgSurfaceMeshParameterizationEnums
+/// \ingroup PkgDiscreteLieFlowErrors
 /// The message of any `Error_code` value, including those of the Discrete Lie Flow.
 /// (A `switch`, so that the compiler reports a code without a message.)
 inline const char* discrete_lie_flow_error_message(int code)
@@ -51,6 +54,7 @@ inline const char* discrete_lie_flow_error_message(int code)
   return "Unknown error";
 }
 
+/// \ingroup PkgDiscreteLieFlowErrors
 /// The identifier of an `Error_code` value as used in reports (`"ok"`, `"ERROR_NO_TOPOLOGICAL_DISC"`, ...).
 inline const char* discrete_lie_flow_error_name(int code)
 {
@@ -74,6 +78,7 @@ inline const char* discrete_lie_flow_error_name(int code)
   return "ERROR_UNKNOWN";
 }
 
+/// \ingroup PkgDiscreteLieFlowOptions
 /// Which flow moves the domain vertices.
 enum class Discrete_lie_flow_mode
 {
@@ -87,6 +92,7 @@ enum class Discrete_lie_flow_mode
   PAPER
 };
 
+/// \ingroup PkgDiscreteLieFlowOptions
 /// What the boundary vertices slide on.
 enum class Discrete_lie_flow_border
 {
@@ -96,6 +102,7 @@ enum class Discrete_lie_flow_border
   FREE       ///< the initial boundary polyline (e.g. from LSCM or ARAP)
 };
 
+/// \ingroup PkgDiscreteLieFlowOptions
 /// Why the flow stopped.
 enum class Discrete_lie_flow_stop_reason
 {
@@ -107,7 +114,9 @@ enum class Discrete_lie_flow_stop_reason
   INTERRUPTED     ///< the per-iteration callback asked to stop
 };
 
-inline const char* stop_reason_name(Discrete_lie_flow_stop_reason r)
+/// \ingroup PkgDiscreteLieFlowOptions
+/// The name of a stop reason as used in reports (`"converged"`, `"plateau"`, ...).
+inline const char* discrete_lie_flow_stop_reason_name(Discrete_lie_flow_stop_reason r)
 {
   switch(r) {
   case Discrete_lie_flow_stop_reason::NOT_RUN: return "not_run";
@@ -120,7 +129,9 @@ inline const char* stop_reason_name(Discrete_lie_flow_stop_reason r)
   return "unknown";
 }
 
-inline const char* mode_name(Discrete_lie_flow_mode m)
+/// \ingroup PkgDiscreteLieFlowOptions
+/// The name of a mode as used in reports (`"certified"`, `"paper"`).
+inline const char* discrete_lie_flow_mode_name(Discrete_lie_flow_mode m)
 {
   switch(m) {
   case Discrete_lie_flow_mode::CERTIFIED: return "certified";
@@ -129,7 +140,9 @@ inline const char* mode_name(Discrete_lie_flow_mode m)
   return "unknown";
 }
 
-inline const char* border_name(Discrete_lie_flow_border b)
+/// \ingroup PkgDiscreteLieFlowOptions
+/// The name of a border as used in reports (`"automatic"`, `"circle"`, `"square"`, `"free"`).
+inline const char* discrete_lie_flow_border_name(Discrete_lie_flow_border b)
 {
   switch(b) {
   case Discrete_lie_flow_border::AUTOMATIC: return "automatic";
@@ -140,6 +153,7 @@ inline const char* border_name(Discrete_lie_flow_border b)
   return "unknown";
 }
 
+/// \ingroup PkgDiscreteLieFlowOptions
 /// What one iteration of the flow did; passed to the per-iteration callback.
 struct Discrete_lie_flow_iteration
 {
@@ -154,68 +168,106 @@ struct Discrete_lie_flow_iteration
   double seconds = 0;          ///< elapsed since the flow started
 };
 
-/// Settings of the Discrete Lie Flow. Defaults are the measured choices.
-struct Discrete_lie_flow_options
+/// \ingroup PkgDiscreteLieFlowOptions
+/// Settings of the certified flows only (the paper mode is the paper's flow).
+struct Discrete_lie_flow_certified_options
 {
-  Discrete_lie_flow_mode mode = Discrete_lie_flow_mode::CERTIFIED;
-  Discrete_lie_flow_border border = Discrete_lie_flow_border::AUTOMATIC;
-  /// Stop when D_area − 2 ≤ tolerance (D_area ≤ 2.01 by default).
-  double tolerance = 1e-2;
-  /// Spherical flow: stop as converged only once the mean |log area ratio|
-  /// is also ≤ this (0: D_area alone decides). D_area − 2 ≈ Σ w (log r)² is
-  /// dominated by a few outlier faces, the mean by the many; a Sobolev flow
-  /// at D_area 2.01 still had a mean of 0.05–0.09. The planar flows ignore it.
-  double log_area_tolerance = 0.02;
   /// With a non-uniform density, stop as converged only once every region of
   /// ρ (every sublevel set {ρ < c} between two of its values, and its
   /// complement) also has its prescribed share of the domain's area within
   /// this, relative; regions of fewer than 32 faces are not held (their
   /// share is a few faces' rounding). 0: D_area alone decides. D_area weighs
-  /// each face's own error, so it lets a whole region drift: at D_area
-  /// 2.0005 a region scaled by 0.5 was 1.8% off. The paper mode ignores it
-  /// (it is the paper's flow).
+  /// each face's own error, so it lets a whole region drift
+  /// (doc/measure_control.md).
   double share_tolerance = 5e-3;
+};
+
+/// \ingroup PkgDiscreteLieFlowOptions
+/// Settings of the paper mode only.
+struct Discrete_lie_flow_paper_options
+{
+  /// Largest step λ: the line search samples below min(4·step_cap, μ·λ_crit);
+  /// step 1 is the full linearised correction.
+  double step_cap = 1.0;
+  /// Flip the flowing mesh to Delaunay before each solve.
+  bool delaunay_flips = true;
+  /// Lump the targets A_M on the flowing faces (a deviation from Algorithm 1,
+  /// whose literal reading — A_M lumped once on the input faces — stalls as
+  /// soon as a vertex changes valence). `false` gives the literal reading.
+  bool lump_targets_on_flowing_faces = true;
+  /// A step is refused when a flowing face's normalised area ratio falls
+  /// below this (the degeneracy guard; orientation alone lets a face
+  /// collapse towards zero while staying "positive").
+  double degeneracy_ratio = 1e-8;
+};
+
+/// \ingroup PkgDiscreteLieFlowOptions
+/// Settings of the disk only (`Discrete_lie_flow_parameterizer_3`).
+struct Discrete_lie_flow_disk_options
+{
+  /// What the boundary vertices slide on; `AUTOMATIC` detects it from the initial map.
+  Discrete_lie_flow_border border = Discrete_lie_flow_border::AUTOMATIC;
+};
+
+/// \ingroup PkgDiscreteLieFlowOptions
+/// Settings of the sphere only (`Discrete_lie_flow_sphere_parameterizer_3`).
+struct Discrete_lie_flow_sphere_options
+{
+  /// Stop as converged only once the mean |log area ratio| is also ≤ this
+  /// (0: D_area alone decides). D_area − 2 ≈ Σ w (log r)² is dominated by a
+  /// few outlier faces, the mean by the many; a Sobolev flow at D_area 2.01
+  /// still had a mean of 0.05–0.09.
+  double log_area_tolerance = 0.02;
+};
+
+/// \ingroup PkgDiscreteLieFlowOptions
+/// Settings of the Discrete Lie Flow: what every flow reads, and one part
+/// per mode and per domain for what only that one reads. Defaults are the
+/// measured choices.
+struct Discrete_lie_flow_options
+{
+  /// Which flow: certified (the default; the caller's triangles, never folded) or the paper's.
+  Discrete_lie_flow_mode mode = Discrete_lie_flow_mode::CERTIFIED;
+  /// Stop when D_area − 2 ≤ tolerance (D_area ≤ 2.01 by default).
+  double tolerance = 1e-2;
   /// Hard cap on the number of iterations.
   std::size_t max_iterations = 500;
   /// Fraction μ ∈ (0, 1) of the smallest critical root that a step may take;
   /// 0 selects the measured default (0.8; in paper mode 0.95, the bound of
-  /// its line search; see doc/).
+  /// its line search; doc/paper_mode.md).
   double mu = 0;
-  /// Largest step λ (paper mode: its line search samples below
-  /// min(4·step_cap, μ·λ_crit)); step 1 is the full linearised correction.
-  double step_cap = 1.0;
-  /// Plateau test: stop when the best D_area improved by less than this
-  /// relative amount over `plateau_window` iterations (paper mode: at least
-  /// 3e-4, and a slow-tail test besides); 0 turns plateau detection off.
+  /// Plateau test: stop when the progress (the energy; in paper mode the
+  /// best D_area) improved by less than this relative amount over
+  /// `plateau_window` iterations (paper mode: at least 3e-4, and a slow-tail
+  /// test besides; 0 turns both off there).
   double plateau_tolerance = 1e-4;
+  /// The number of iterations the plateau test looks back over.
   std::size_t plateau_window = 10;
-  /// Paper mode: flip the flowing mesh to Delaunay before each solve.
-  bool delaunay_flips = true;
-  /// Paper mode: lump the targets A_M on the flowing faces (our deviation
-  /// from Algorithm 1, whose literal reading — A_M lumped once on the input
-  /// faces — stalls as soon as a vertex changes valence). `false` gives the
-  /// literal reading, for the record.
-  bool lump_targets_on_flowing_faces = true;
-  /// Paper mode: a step is refused when a flowing face's normalised area
-  /// ratio falls below this (the degeneracy guard; orientation alone lets a
-  /// face collapse towards zero while staying "positive").
-  double degeneracy_ratio = 1e-8;
-  /// Stall detector: the same face limits this many consecutive steps while
-  /// the step shrinks, or a step needs more than `max_backtracks` halvings.
+  /// Stall detector of the paper modes and of the spherical certified flow:
+  /// the same face limits this many consecutive short steps (paper), or this
+  /// many steps in a row need 20 halvings or more (sphere, certified).
   std::size_t stall_window = 25;
+  /// The most step halvings an iteration may make; beyond, the flow stops as stalled.
   std::size_t max_backtracks = 60;
   /// Fixed step instead of the adaptive one (0: adaptive). For the paper's
   /// Table 2 experiment; a fixed step that would fold is reported as stalled.
   double fixed_step = 0;
-  /// Per-face density ρ (> 0) in the order of `faces(mesh)` (for
-  /// `run_flow()`: of the problem's faces); empty means ρ ≡ 1. Targets are
-  /// A_M(f) = ρ_f · area_M(f), normalised. Property maps can be given with
-  /// `set_face_density()` / `set_vertex_density()` instead.
+  /// Per-face density ρ (> 0) in the order of `faces(mesh)`; empty means
+  /// ρ ≡ 1. Targets are A_M(f) = ρ_f · area_M(f), normalised. Property maps
+  /// can be given with `set_face_density()` / `set_vertex_density()` instead.
   std::vector<double> face_density;
-  /// Keep the per-iteration history in the result.
+  /// Keep the per-iteration history in the report.
   bool record_history = false;
   /// Called after every iteration; return false to stop the flow.
   std::function<bool(const Discrete_lie_flow_iteration&)> callback;
+  /// What the certified flows alone read.
+  Discrete_lie_flow_certified_options certified;
+  /// What the paper mode alone reads.
+  Discrete_lie_flow_paper_options paper;
+  /// What the disk alone reads.
+  Discrete_lie_flow_disk_options disk;
+  /// What the sphere alone reads.
+  Discrete_lie_flow_sphere_options sphere;
 };
 
 } // namespace Surface_mesh_parameterization

@@ -4,6 +4,8 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_PARAMETERIZER_3_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_PARAMETERIZER_3_H
 
+#include <CGAL/license/Surface_mesh_parameterization.h>
+
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
@@ -35,11 +37,11 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgSurfaceMeshParameterizationMethods
+/// \ingroup PkgDiscreteLieFlowParameterizers
 ///
 /// The class `Discrete_lie_flow_parameterizer_3` computes an area-preserving
 /// (or density-prescribed) parameterization of a disk-topology triangle mesh
-/// by the Discrete Lie Flow (Zhang et al. 2019): starting from any flip-free
+/// by the Discrete Lie Flow of Su, Li, Zhao, Lei and Gu (\ref DLFBibSu2019 "Su et al. 2019"): starting from any flip-free
 /// initial map, the domain vertices flow until every triangle's domain area
 /// is proportional to its (density-weighted) surface area, with the step
 /// bounded by the closed-form critical roots and certified by CGAL's exact
@@ -62,17 +64,30 @@ template <class TriangleMesh_, class InitialParameterizer_ = Default, class Solv
 class Discrete_lie_flow_parameterizer_3
 {
 public:
+  /// \name Types
+  /// @{
+
+  /// The mesh type, `TriangleMesh_`.
   typedef TriangleMesh_ Triangle_mesh;
+  /// The parameterizer of the initial map.
   typedef typename Default::Get<InitialParameterizer_,
     Symmetric_barycentric_mapping_parameterizer_3<TriangleMesh_> >::type Initial_parameterizer;
+  /// The solver traits of the flow's sparse SPD systems.
   typedef typename Default::Get<SolverTraits_,
     Eigen_solver_traits<internal::dlf::Default_spd_solver> >::type Solver_traits;
 
+  /// Vertex descriptor of the mesh.
   typedef typename boost::graph_traits<Triangle_mesh>::vertex_descriptor vertex_descriptor;
+  /// Halfedge descriptor of the mesh.
   typedef typename boost::graph_traits<Triangle_mesh>::halfedge_descriptor halfedge_descriptor;
+  /// Face descriptor of the mesh.
   typedef typename boost::graph_traits<Triangle_mesh>::face_descriptor face_descriptor;
+  /// The kernel of the mesh's points.
   typedef typename internal::Kernel_traits<Triangle_mesh>::Kernel Kernel;
+  /// The point type of the uv map.
   typedef typename Kernel::Point_2 Point_2;
+
+  /// @}
 
   /// \param initial the parameterizer that gives the initial map
   /// \param options flow settings (mode, tolerance, caps, density, callback)
@@ -84,8 +99,11 @@ public:
       m_solver_traits(solver_traits), m_shared(std::make_shared<Shared_state>())
   {}
 
+  /// The flow settings, to read or change before `parameterize()`.
   Discrete_lie_flow_options& options() { return m_options; }
+  /// The flow settings.
   const Discrete_lie_flow_options& options() const { return m_options; }
+  /// The parameterizer of the initial map.
   Initial_parameterizer& initial_parameterizer() { return *m_initial; }
 
   /// Sets a per-face density ρ > 0 (a readable property map, `face_descriptor`

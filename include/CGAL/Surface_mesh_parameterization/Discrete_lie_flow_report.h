@@ -4,6 +4,8 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_REPORT_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_REPORT_H
 
+#include <CGAL/license/Surface_mesh_parameterization.h>
+
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 
 #include <array>
@@ -14,45 +16,48 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgSurfaceMeshParameterizationMethods
+/// \ingroup PkgDiscreteLieFlowOptions
 /// The distortion of a map from the input triangles to domain triangles
 /// (planar, or flat triangles between sphere points), after the domain is
 /// scaled uniformly so that its total area equals the total
-/// (density-weighted) input area. Definitions: doc/design.md, "Metrics".
+/// (density-weighted) input area (doc/design.md, "Metrics").
 struct Discrete_lie_flow_distortion
 {
   double d_area = 0;              ///< Σ w_t (σ1σ2 + 1/(σ1σ2)), optimum 2
   double arap = 0;                ///< Σ w_t ((σ1 − 1)² + (σ2 − 1)²), σ2 < 0 on inverted faces
   double symmetric_dirichlet = 0; ///< Σ_t (σ1² + σ1⁻² + σ2² + σ2⁻²), plain sum
   double log_area_mean_abs = 0;   ///< mean over faces of |log(area_Ω / (ρ area_M))|
-  double log_area_max_abs = 0;
-  double log_area_rms = 0;
+  double log_area_max_abs = 0;    ///< largest |log(area_Ω / (ρ area_M))|
+  double log_area_rms = 0;        ///< root mean square of log(area_Ω / (ρ area_M))
   std::size_t inverted_faces = 0;   ///< by exact orientation, against the majority orientation
   std::size_t degenerate_faces = 0; ///< exactly zero domain area; left out of the sums
   double min_angle_degrees = 0;     ///< smallest angle of a domain triangle
-  std::size_t faces_below_1_degree = 0;
+  std::size_t faces_below_1_degree = 0; ///< domain triangles with an angle below 1°
 };
 
-/// \ingroup PkgSurfaceMeshParameterizationMethods
+/// \ingroup PkgDiscreteLieFlowOptions
 /// What a run of the Discrete Lie Flow did, on the disk
 /// (`Discrete_lie_flow_parameterizer_3`) and on the sphere
 /// (`Discrete_lie_flow_sphere_parameterizer_3`): the same names for the same
-/// things. A field that only one of them fills says so. Shared by the copies
+/// things; a field that only one of them fills says so. Shared by the copies
 /// of a parameterizer, so a named object passed by value to CGAL's
 /// `parameterize()` still sees the report of its last run.
 struct Discrete_lie_flow_report
 {
+  /// `OK`, or the error code that `parameterize()` returned.
   Error_code status = OK;
   std::string message;          ///< one line naming the offending element on error
+  /// Why the flow stopped.
   Discrete_lie_flow_stop_reason stop_reason = Discrete_lie_flow_stop_reason::NOT_RUN;
   std::size_t vertices = 0;     ///< of the flowed component (the disk) or mesh (the sphere)
-  std::size_t faces = 0;        ///< idem
+  std::size_t faces = 0;        ///< of the flowed component (the disk) or mesh (the sphere)
+  /// The number of accepted iterations.
   std::size_t iterations = 0;
   double initial_d_area = 0;    ///< on the certified triangulation, before the flow
   double final_d_area = 0;      ///< on the certified triangulation (the flowing one in paper mode)
   double final_residual = 0;    ///< Σ (A_Ω − A_M)² / (Σ A_Ω)² on that triangulation
   /// The largest error of a region's share of the domain (the measure of
-  /// `options.share_tolerance`, doc/measure_control.md); 0 without a density.
+  /// `share_tolerance`, doc/measure_control.md); 0 without a density.
   double final_share_error = 0;
   std::size_t flips = 0;        ///< paper mode: edge flips in total
   /// The caller's triangles not positively oriented under the final map
@@ -65,20 +70,26 @@ struct Discrete_lie_flow_report
   std::size_t symbolic_analyses = 0;       ///< symbolic analyses (a new sparsity pattern)
   double seconds_initial = 0;   ///< the initial map
   double seconds_flow = 0;      ///< the flow
+  ///@{
   /// Split of seconds_flow: matrix assembly, factorisation and solve, step
   /// search with certification, flips and relaxation sweeps.
   double seconds_assembly = 0, seconds_solve = 0, seconds_step = 0;
+  ///@}
+  ///@{
   /// The distortion metrics of the initial and the final map on the caller's
-  /// triangles (doc/design.md, "Metrics"); valid when `status` is `OK`.
+  /// triangles; valid when `status` is `OK`.
   Discrete_lie_flow_distortion initial_metrics, final_metrics;
+  ///@}
   std::vector<Discrete_lie_flow_iteration> history; ///< when options.record_history
   /// The final domain triangulation as triples of vertex indices (the disk:
   /// the `VertexIndexMap` of the call; the sphere: the order of
   /// `vertices(mesh)`): the input's in certified mode, the flowing one in paper mode.
   std::vector<std::array<int, 3> > domain_faces;
+  ///@{
   /// Per vertex index: the lumped areas A_M (target, scaled to the domain's
   /// total) and A_Ω of the final map, on `domain_faces`.
   std::vector<double> target_area, domain_area;
+  ///@}
   /// Per face (the order of the input's faces): the density ρ the flow used.
   std::vector<double> face_density;
   /// The disk: the border the flow used (circle, square or free).
@@ -87,11 +98,11 @@ struct Discrete_lie_flow_report
   /// except with flips off, or when the last flips were undone because they
   /// raised D_area: starts compressed to the rounding level).
   std::size_t flowing_non_delaunay_edges = 0;
-  /// The sphere: the face of the initial map's north cap (index in face
-  /// order), the plane scale of the stereographic lift, and the punctures
-  /// tried before one was certified.
+  /// The sphere: the face of the initial map's north cap (index in face order).
   int puncture_face = -1;
+  /// The sphere: the plane scale of the stereographic lift.
   double initial_scale = 0;
+  /// The sphere: the punctures tried before one was certified.
   std::size_t initial_attempts = 0;
 };
 

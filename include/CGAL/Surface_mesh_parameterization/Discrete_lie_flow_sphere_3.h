@@ -4,6 +4,8 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_SPHERE_3_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_SPHERE_3_H
 
+#include <CGAL/license/Surface_mesh_parameterization.h>
+
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
@@ -31,7 +33,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgSurfaceMeshParameterizationMethods
+/// \ingroup PkgDiscreteLieFlowParameterizers
 ///
 /// Area-preserving (or density-prescribed) map of a closed genus-0 triangle
 /// mesh onto the unit sphere by the Discrete Lie Flow on the sphere.
@@ -66,19 +68,33 @@ template <class TriangleMesh_, class SolverTraits_ = Default>
 class Discrete_lie_flow_sphere_parameterizer_3
 {
 public:
+  /// \name Types
+  /// @{
+
+  /// The mesh type, `TriangleMesh_`.
   typedef TriangleMesh_ Triangle_mesh;
+  /// The solver traits of the flow's sparse SPD systems.
   typedef typename Default::Get<SolverTraits_,
     Eigen_solver_traits<internal::dlf::Default_spd_solver> >::type Solver_traits;
+  /// Vertex descriptor of the mesh.
   typedef typename boost::graph_traits<Triangle_mesh>::vertex_descriptor vertex_descriptor;
+  /// Face descriptor of the mesh.
   typedef typename boost::graph_traits<Triangle_mesh>::face_descriptor face_descriptor;
+  /// Halfedge descriptor of the mesh.
   typedef typename boost::graph_traits<Triangle_mesh>::halfedge_descriptor halfedge_descriptor;
 
+  /// @}
+
+  /// \param options flow settings (mode, tolerances, caps, density, callback)
+  /// \param solver_traits the sparse SPD solver
   explicit Discrete_lie_flow_sphere_parameterizer_3(const Discrete_lie_flow_options& options = Discrete_lie_flow_options(),
                                                     Solver_traits solver_traits = Solver_traits())
     : m_options(options), m_solver_traits(solver_traits), m_report(std::make_shared<Discrete_lie_flow_report>())
   {}
 
+  /// The flow settings, to read or change before `parameterize()`.
   Discrete_lie_flow_options& options() { return m_options; }
+  /// The flow settings.
   const Discrete_lie_flow_options& options() const { return m_options; }
 
   /// The report of the last run (shared by all copies of this object).
@@ -201,7 +217,7 @@ private:
   std::shared_ptr<Discrete_lie_flow_report> m_report;
 };
 
-/// \ingroup PkgSurfaceMeshParameterizationMethods
+/// \ingroup PkgDiscreteLieFlowParameterizers
 /// Maps the closed genus-0 triangle mesh `mesh` onto the unit sphere with
 /// the spherical Discrete Lie Flow (see `Discrete_lie_flow_sphere_parameterizer_3`);
 /// `sphere_map` receives unit vectors on success. Returns the report, whose

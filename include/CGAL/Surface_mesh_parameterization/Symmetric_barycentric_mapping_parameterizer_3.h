@@ -4,6 +4,8 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_SYMMETRIC_BARYCENTRIC_MAPPING_PARAMETERIZER_3_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_SYMMETRIC_BARYCENTRIC_MAPPING_PARAMETERIZER_3_H
 
+#include <CGAL/license/Surface_mesh_parameterization.h>
+
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/internal/kernel_traits.h>
@@ -14,7 +16,7 @@
 #include <CGAL/boost/graph/iterator.h>
 
 #include <Eigen/SparseCholesky>
-#ifdef DLF_USE_CHOLMOD
+#ifdef CGAL_DLF_USE_CHOLMOD
 #include <Eigen/CholmodSupport>
 #endif
 
@@ -25,7 +27,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgSurfaceMeshParameterizationMethods
+/// \ingroup PkgDiscreteLieFlowParameterizers
 ///
 /// Tutte's barycentric map (uniform weights) with a fixed convex border: the
 /// same map as `Barycentric_mapping_parameterizer_3`, solved as the symmetric
@@ -44,22 +46,38 @@ template <class TriangleMesh_, class BorderParameterizer_ = Default, class Solve
 class Symmetric_barycentric_mapping_parameterizer_3
 {
 public:
+  /// \name Types
+  /// @{
+
+  /// The mesh type, `TriangleMesh_`.
   typedef TriangleMesh_ Triangle_mesh;
+  /// The parameterizer of the border.
   typedef typename Default::Get<BorderParameterizer_, Circular_border_arc_length_parameterizer_3<TriangleMesh_> >::type
     Border_parameterizer;
+  /// The sparse matrix type of the interior system.
   typedef Eigen::SparseMatrix<double> Matrix;
-#ifdef DLF_USE_CHOLMOD
+  /// The default SPD solver: CHOLMOD's supernodal LLT when `CGAL_DLF_USE_CHOLMOD` is defined, else `Eigen::SimplicialLDLT`.
+#ifdef CGAL_DLF_USE_CHOLMOD
   typedef Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower> Default_solver;
 #else
   typedef Eigen::SimplicialLDLT<Matrix, Eigen::Lower> Default_solver;
 #endif
+  /// The solver traits of the interior system.
   typedef typename Default::Get<SolverTraits_, Eigen_solver_traits<Default_solver> >::type Solver_traits;
 
+  /// Vertex descriptor of the mesh.
   typedef typename boost::graph_traits<Triangle_mesh>::vertex_descriptor vertex_descriptor;
+  /// Halfedge descriptor of the mesh.
   typedef typename boost::graph_traits<Triangle_mesh>::halfedge_descriptor halfedge_descriptor;
+  /// Face descriptor of the mesh.
   typedef typename boost::graph_traits<Triangle_mesh>::face_descriptor face_descriptor;
+  /// The point type of the uv map.
   typedef typename internal::Kernel_traits<Triangle_mesh>::Kernel::Point_2 Point_2;
 
+  /// @}
+
+  /// \param border the parameterizer of the (convex) border
+  /// \param solver the sparse SPD solver of the interior system
   explicit Symmetric_barycentric_mapping_parameterizer_3(Border_parameterizer border = Border_parameterizer(),
                                                          Solver_traits solver = Solver_traits())
     : m_border(border), m_solver(solver)

@@ -4,6 +4,8 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_SQUARE_BORDER_CORNERS_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_SQUARE_BORDER_CORNERS_H
 
+#include <CGAL/license/Surface_mesh_parameterization.h>
+
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/Surface_mesh_parameterization/internal/kernel_traits.h>
@@ -20,7 +22,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgSurfaceMeshParameterizationHelperFunctions
+/// \ingroup PkgDiscreteLieFlowHelperFunctions
 ///
 /// Chooses the four corners of a square border so that no triangle gets all
 /// three vertices on one side of the square. An *ear* (a border vertex with a

@@ -11,7 +11,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sparse_solver.h>
 
 #include <Eigen/SparseCholesky>
-#ifdef DLF_USE_CHOLMOD
+#ifdef CGAL_DLF_USE_CHOLMOD
 #include <Eigen/CholmodSupport>
 #endif
 
@@ -20,7 +20,7 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace dlf {
 
-#ifdef DLF_USE_CHOLMOD
+#ifdef CGAL_DLF_USE_CHOLMOD
 typedef Eigen::CholmodSupernodalLLT<Sparse_matrix, Eigen::Lower> Default_spd_solver;
 #else
 typedef Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Lower> Default_spd_solver;

@@ -122,7 +122,7 @@ Error_code flow_disk(Disk_problem& P, std::vector<Vec2>& uv, const Discrete_lie_
     std::reverse(P.boundary.begin(), P.boundary.end());
     std::reverse(loop.begin(), loop.end());
   }
-  Boundary_curve curve(loop, opt.border);
+  Boundary_curve curve(loop, opt.disk.border);
   R.border = curve.kind();
   R.face_density = face_densities(P);
   R.initial_metrics = planar_distortion(P.xyz, uv, P.faces, R.face_density);

@@ -112,7 +112,7 @@ public:
     r.plateau_window = opt.plateau_window;
     r.plateau_tolerance = opt.plateau_tolerance;
     r.stall_window = opt.stall_window;
-    r.stall_step = 1e-3 * opt.step_cap;
+    r.stall_step = 1e-3 * opt.paper.step_cap;
     return r;
   }
 

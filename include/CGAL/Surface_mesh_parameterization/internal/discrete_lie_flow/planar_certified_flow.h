@@ -89,7 +89,7 @@ public:
   bool converged() const
   {
     return m_E - 2 <= m_opt.tolerance &&
-           (!(m_opt.share_tolerance > 0) || m_levels.error(m_u) <= m_opt.share_tolerance);
+           (!(m_opt.certified.share_tolerance > 0) || m_levels.error(m_u) <= m_opt.certified.share_tolerance);
   }
 
   /// The Sobolev gradient of E (of L in the opening), or the Gauss–Newton

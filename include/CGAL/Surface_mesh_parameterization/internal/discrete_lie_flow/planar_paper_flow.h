@@ -180,7 +180,7 @@ public:
     {
       Scoped_timer timer(out.seconds_assembly);
       lump_on_vertices(m_n, m_tri.faces, m_u, m_AO);
-      if(m_opt.lump_targets_on_flowing_faces) lump_on_vertices(m_n, m_tri.faces, m_target, m_AM);
+      if(m_opt.paper.lump_targets_on_flowing_faces) lump_on_vertices(m_n, m_tri.faces, m_target, m_AM);
       else m_AM = m_literal_AM;
       double so = 0, sm = 0;
       for(std::size_t i = 0; i < m_n; ++i) { so += m_AO[i]; sm += m_AM[i]; }
@@ -226,7 +226,7 @@ public:
     step.critical = smallest_critical_step(F.size(), [&](std::size_t t, double) {
       return critical_step_2(m_uv[F[t][0]], m_uv[F[t][1]], m_uv[F[t][2]], m_vel[F[t][0]], m_vel[F[t][1]], m_vel[F[t][2]]);
     }, step.limiting);
-    step.lambda = m_opt.fixed_step > 0 ? m_opt.fixed_step : (std::min)(m_opt.step_cap, step_fraction(m_opt) * step.critical);
+    step.lambda = m_opt.fixed_step > 0 ? m_opt.fixed_step : (std::min)(m_opt.paper.step_cap, step_fraction(m_opt) * step.critical);
   }
 
   void search(Flow_step& step, Flow_outcome& out)
@@ -286,7 +286,7 @@ private:
 
   std::size_t make_delaunay(Flow_outcome& out)
   {
-    if(!m_opt.delaunay_flips) return 0;
+    if(!m_opt.paper.delaunay_flips) return 0;
     const std::size_t flips = m_tri.make_delaunay(m_uv, [&](int f) {
       m_target[std::size_t(f)] = m_targets(m_tri.faces[std::size_t(f)]); }, 100 * m_tri.faces.size() + 100);
     out.flips += flips;
@@ -313,7 +313,7 @@ private:
       U += m_u_trial[t]; T += m_target[t];
     }
     for(std::size_t t = 0; t < m_u_trial.size(); ++t)
-      if((m_u_trial[t] / U) < m_opt.degeneracy_ratio * (m_target[t] / T)) return std::numeric_limits<double>::infinity();
+      if((m_u_trial[t] / U) < m_opt.paper.degeneracy_ratio * (m_target[t] / T)) return std::numeric_limits<double>::infinity();
     return d_area_of(m_u_trial, m_target);
   }
 
@@ -332,7 +332,7 @@ private:
     std::vector<std::pair<double, double> > samples; // (D_area, λ)
     // A μ given by the caller bounds the samples instead of 0.95.
     const double upper = step_fraction(m_opt, m_settings.line_search_upper);
-    double l = (std::min)(m_settings.line_search_cap * m_opt.step_cap, upper * step.critical);
+    double l = (std::min)(m_settings.line_search_cap * m_opt.paper.step_cap, upper * step.critical);
     for(std::size_t k = 0; k < m_settings.line_search; ++k, l *= std::sqrt(0.5)) {
       const double e = admissible_d_area(l);
       if(std::isfinite(e)) samples.emplace_back(e, l);

@@ -119,11 +119,11 @@ public:
   bool converged()
   {
     if(!(m_D - 2 <= m_opt.tolerance)) return false;
-    if(m_opt.log_area_tolerance > 0 && !(flat_mean_abs_log_ratio(m_p, m_P.faces, m_P.target) <= m_opt.log_area_tolerance))
+    if(m_opt.sphere.log_area_tolerance > 0 && !(flat_mean_abs_log_ratio(m_p, m_P.faces, m_P.target) <= m_opt.sphere.log_area_tolerance))
       return false;
-    if(!(m_opt.share_tolerance > 0) || m_levels.uniform()) return true;
+    if(!(m_opt.certified.share_tolerance > 0) || m_levels.uniform()) return true;
     signed_areas_sphere(m_p, m_P.faces, m_flat);
-    return m_levels.error(m_flat) <= m_opt.share_tolerance;
+    return m_levels.error(m_flat) <= m_opt.certified.share_tolerance;
   }
 
   /// d = −P H g, P the tangent projection, H = K⁻¹ (the Sobolev gradient)
@@ -220,7 +220,7 @@ public:
     }
     // In the polish the mean |log r| may still fall while E hardly moves: a
     // plateau is when neither moves.
-    if(m_polish && m_opt.log_area_tolerance > 0) m_mean_history.push_back(flat_mean_abs_log_ratio(m_p, m_P.faces, m_P.target));
+    if(m_polish && m_opt.sphere.log_area_tolerance > 0) m_mean_history.push_back(flat_mean_abs_log_ratio(m_p, m_P.faces, m_P.target));
   }
 
   double d_area() const { return m_D; }

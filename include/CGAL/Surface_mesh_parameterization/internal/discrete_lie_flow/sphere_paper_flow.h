@@ -81,11 +81,11 @@ public:
     {
       Scoped_timer timer(out.seconds_assembly);
       m_flips = 0;
-      if(m_opt.delaunay_flips) m_flips = make_delaunay_sphere(m_tri, m_p, [&](int f) { retarget(f); }, m_max_flips);
+      if(m_opt.paper.delaunay_flips) m_flips = make_delaunay_sphere(m_tri, m_p, [&](int f) { retarget(f); }, m_max_flips);
       out.flips += m_flips;
       if(m_flips > 0) signed_areas_sphere(m_p, m_tri.faces, m_u);
       lump_on_vertices(m_n, m_tri.faces, m_u, m_AO);
-      if(m_opt.lump_targets_on_flowing_faces) lump_on_vertices(m_n, m_tri.faces, m_target, m_AM);
+      if(m_opt.paper.lump_targets_on_flowing_faces) lump_on_vertices(m_n, m_tri.faces, m_target, m_AM);
       else m_AM = m_literal_AM;
       double so = 0, sm = 0;
       for(std::size_t i = 0; i < m_n; ++i) { so += m_AO[i]; sm += m_AM[i]; }
@@ -127,7 +127,7 @@ public:
       const std::size_t a = std::size_t(F[t][0]), b = std::size_t(F[t][1]), c = std::size_t(F[t][2]);
       return critical_step_sphere(m_p[a], m_p[b], m_p[c], m_d[a], m_d[b], m_d[c]);
     }, step.limiting);
-    step.lambda = m_opt.fixed_step > 0 ? m_opt.fixed_step : (std::min)(m_opt.step_cap, step_fraction(m_opt) * step.critical);
+    step.lambda = m_opt.fixed_step > 0 ? m_opt.fixed_step : (std::min)(m_opt.paper.step_cap, step_fraction(m_opt) * step.critical);
   }
 
   /// Shrinks until every flowing face is positive (exact) and none collapses:
@@ -147,7 +147,7 @@ public:
       bool ok = true;
       for(std::size_t t = 0; t < m_u_trial.size() && ok; ++t) { ok = m_u_trial[t] > 0; U_trial += m_u_trial[t]; }
       for(std::size_t t = 0; t < m_u_trial.size() && ok; ++t)
-        ok = (m_u_trial[t] / U_trial) >= (std::min)(m_opt.degeneracy_ratio * (m_target[t] / T), 0.5 * (m_u[t] / U));
+        ok = (m_u_trial[t] / U_trial) >= (std::min)(m_opt.paper.degeneracy_ratio * (m_target[t] / T), 0.5 * (m_u[t] / U));
       if(!ok) continue;
       if(!count_orientations_sphere(m_trial, m_tri.faces, true).all_positive()) { ++out.rejected_by_exact_check; continue; }
       accepted = true;
@@ -204,8 +204,8 @@ private:
     m_best_tri = m_tri;
     m_best_target = m_target;
     m_best_converged = m_best - 2 <= m_opt.tolerance &&
-                       (!(m_opt.log_area_tolerance > 0) ||
-                        flat_mean_abs_log_ratio(m_p, m_tri.faces, m_target) <= m_opt.log_area_tolerance);
+                       (!(m_opt.sphere.log_area_tolerance > 0) ||
+                        flat_mean_abs_log_ratio(m_p, m_tri.faces, m_target) <= m_opt.sphere.log_area_tolerance);
   }
 
   /// The best triangulation was made Delaunay for the positions before its
@@ -216,7 +216,7 @@ private:
   /// returned unflipped, its non-Delaunay edges counted.
   void flip_best_once_more(Flow_outcome& out)
   {
-    if(!m_opt.delaunay_flips) return;
+    if(!m_opt.paper.delaunay_flips) return;
     Flip_triangulation flipped = m_best_tri;
     std::vector<double> flipped_target = m_best_target;
     const std::size_t last = make_delaunay_sphere(flipped, m_p, [&](int f) {
