@@ -315,7 +315,7 @@ static json metrics_json(const SMP::Discrete_lie_flow_distortion& d, std::size_t
   j["log_area_max_abs"] = d.log_area_max_abs;
   j["inverted_faces"] = d.inverted_faces;
   j["degenerate_faces"] = d.degenerate_faces;
-  j["folds"] = d.caller_inverted_faces;
+  j["folds"] = d.inverted_faces + d.degenerate_faces;
   j["min_angle_degrees"] = d.min_angle_degrees;
   j["faces_below_1_degree"] = d.faces_below_1_degree;
   return j;

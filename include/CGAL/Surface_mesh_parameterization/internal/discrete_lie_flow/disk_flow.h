@@ -87,6 +87,22 @@ inline Error_code report_failure(Discrete_lie_flow_report& R, int code, const st
   return Error_code(code);
 }
 
+/// The verdict of a run whose report is filled: a triangulation the flow
+/// left non-positive (cannot happen: every accepted step and every flip is
+/// certified), a flow that could not improve its start, or success.
+inline Error_code report_verdict(const Flow_outcome& out, Discrete_lie_flow_report& R)
+{
+  if(R.flowing_inverted_faces != 0)
+    return report_failure(R, ERROR_NO_1_TO_1_MAPPING, "the flow produced " + std::to_string(R.flowing_inverted_faces) +
+                                                      " non-positive faces of its triangulation");
+  if(out.iterations == 0 && out.stop_reason == Discrete_lie_flow_stop_reason::STALLED)
+    return report_failure(R, ERROR_FLOW_STALLED, out.solver_failed ? "the linear solver failed on the initial map"
+                                                                   : "no step improves the initial map");
+  R.status = OK;
+  R.message = "Success";
+  return OK;
+}
+
 /// The planar flow on index data: `uv` is an initial map of `P` with all
 /// faces positive or all negative (modified in place on success; the map
 /// keeps the initial orientation). Fills `R`.
@@ -149,14 +165,7 @@ Error_code flow_disk(Disk_problem& P, std::vector<Vec2>& uv, const Discrete_lie_
   R.caller_inverted_faces = cc.inverted + cc.degenerate;
   const Orientation_count dc = count_orientations_2(uv, out.domain_faces);
   R.flowing_inverted_faces = dc.inverted + dc.degenerate;
-  if(R.flowing_inverted_faces != 0) // cannot happen: every accepted step is certified
-    return report_failure(R, ERROR_NO_1_TO_1_MAPPING, "the flow produced inverted triangles");
-  if(out.iterations == 0 && out.stop_reason == Discrete_lie_flow_stop_reason::STALLED)
-    return report_failure(R, ERROR_FLOW_STALLED, out.solver_failed ? "the linear solver failed on the initial map"
-                                                                   : "no step improves the initial map");
-  R.status = OK;
-  R.message = "Success";
-  return OK;
+  return report_verdict(out, R);
 }
 
 } // namespace dlf

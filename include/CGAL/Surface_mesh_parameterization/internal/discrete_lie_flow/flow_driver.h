@@ -15,7 +15,9 @@
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/geometry.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -183,6 +185,30 @@ public:
 protected:
   Flow_stopping m_stopping;
 };
+
+/// The first trial step of the certified flows: a fixed step if the caller
+/// set one, else at most μ·λ_crit and at most 4 times the last accepted step
+/// (1, the full model step, for Gauss–Newton); 1 when both bounds are infinite.
+inline double certified_first_step(const Discrete_lie_flow_options& opt, bool newton, double previous, double critical)
+{
+  const double lambda = opt.fixed_step > 0 ? opt.fixed_step
+                                           : (std::min)(newton ? 1. : 4 * previous, step_fraction(opt) * critical);
+  return std::isfinite(lambda) ? lambda : 1;
+}
+
+/// The paper's step: a fixed step if the caller set one, else
+/// λ = min(λ_cap, μ·λ_crit).
+inline double paper_first_step(const Discrete_lie_flow_options& opt, double critical)
+{
+  return opt.fixed_step > 0 ? opt.fixed_step : (std::min)(opt.paper.step_cap, step_fraction(opt) * critical);
+}
+
+/// Levenberg–Marquardt update of a Gauss–Newton regularisation after an
+/// accepted step: trust the model more after a full step, less after halvings.
+inline double updated_regularization(double eps, std::size_t halvings)
+{
+  return halvings == 0 ? (std::max)(eps / 4, 1e-8) : (halvings >= 2 ? (std::min)(eps * 4, 1e4) : eps);
+}
 
 /// Smallest critical root over `faces` for `root(face index, bound so far)`;
 /// `limiting` receives its face. The bound lets a root function skip faces

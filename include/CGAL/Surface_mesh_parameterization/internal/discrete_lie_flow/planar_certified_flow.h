@@ -118,9 +118,7 @@ public:
     step.critical = smallest_critical_step(F.size(), [&](std::size_t t, double) {
       return critical_step_2(m_uv[F[t][0]], m_uv[F[t][1]], m_uv[F[t][2]], m_vel[F[t][0]], m_vel[F[t][1]], m_vel[F[t][2]]);
     }, step.limiting);
-    step.lambda = m_opt.fixed_step > 0 ? m_opt.fixed_step
-                                       : (std::min)(m_newton ? 1. : 4 * m_lambda_prev, step_fraction(m_opt) * step.critical);
-    if(!std::isfinite(step.lambda)) step.lambda = 1;
+    step.lambda = certified_first_step(m_opt, m_newton, m_lambda_prev, step.critical);
   }
 
   /// Armijo backtracking; the exact predicate has the last word.
@@ -141,9 +139,7 @@ public:
 
   void commit(const Flow_step& step, Flow_outcome& out)
   {
-    // Levenberg–Marquardt: trust the model more after a full step, less after halvings.
-    if(m_newton) m_eps = step.halvings == 0 ? (std::max)(m_eps / 4, 1e-8)
-                                            : (step.halvings >= 2 ? (std::min)(m_eps * 4, 1e4) : m_eps);
+    if(m_newton) m_eps = updated_regularization(m_eps, step.halvings);
     for(std::size_t v = 0; v < m_n; ++v)
       if(m_dofs.boundary_of[v] >= 0 && m_dofs.count[v] > 0)
         m_curve.commit(std::size_t(m_dofs.boundary_of[v]), step.lambda * m_d[m_dofs.first[v]]);

@@ -226,7 +226,7 @@ public:
     step.critical = smallest_critical_step(F.size(), [&](std::size_t t, double) {
       return critical_step_2(m_uv[F[t][0]], m_uv[F[t][1]], m_uv[F[t][2]], m_vel[F[t][0]], m_vel[F[t][1]], m_vel[F[t][2]]);
     }, step.limiting);
-    step.lambda = m_opt.fixed_step > 0 ? m_opt.fixed_step : (std::min)(m_opt.paper.step_cap, step_fraction(m_opt) * step.critical);
+    step.lambda = paper_first_step(m_opt, step.critical);
   }
 
   void search(Flow_step& step, Flow_outcome& out)

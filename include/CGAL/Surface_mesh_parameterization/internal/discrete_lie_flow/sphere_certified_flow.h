@@ -173,9 +173,7 @@ public:
         return infinite_step();
       return smallest_positive_root(k[0], k[1], k[2], k[3]);
     }, step.limiting);
-    step.lambda = m_opt.fixed_step > 0 ? m_opt.fixed_step
-                                       : (std::min)(m_newton ? 1. : 4 * m_lambda_prev, step_fraction(m_opt) * step.critical);
-    if(!std::isfinite(step.lambda)) step.lambda = 1;
+    step.lambda = certified_first_step(m_opt, m_newton, m_lambda_prev, step.critical);
   }
 
   /// Armijo backtracking; the exact predicate has the last word. The slope
@@ -196,9 +194,7 @@ public:
 
   void commit(const Flow_step& step, Flow_outcome& out)
   {
-    // Levenberg–Marquardt: trust the model more after a full step, less after halvings.
-    if(m_newton) m_eps = step.halvings == 0 ? (std::max)(m_eps / 4, 1e-8)
-                                            : (step.halvings >= 2 ? (std::min)(m_eps * 4, 1e4) : m_eps);
+    if(m_newton) m_eps = updated_regularization(m_eps, step.halvings);
     m_p_prev = m_p;
     m_g_prev = m_g;
     m_p.swap(m_trial);

@@ -90,16 +90,9 @@ Error_code map_to_sphere(Sphere_problem& P, std::vector<Vec3>& points, const Dis
   R.caller_inverted_faces = caller.inverted + caller.degenerate;
   const Orientation_count flowing = count_orientations_sphere(p, out.domain_faces);
   R.flowing_inverted_faces = flowing.inverted + flowing.degenerate;
-  if(!flowing.all_positive()) // cannot happen: the start, every accepted step and every flip are certified
-    return report_failure(R, ERROR_NO_1_TO_1_MAPPING, "the flow produced " + std::to_string(R.flowing_inverted_faces) +
-                                                      " non-positive faces of its triangulation");
-  if(out.iterations == 0 && out.stop_reason == Discrete_lie_flow_stop_reason::STALLED)
-    return report_failure(R, ERROR_FLOW_STALLED, out.solver_failed ? "the linear solver failed on the initial map"
-                                                                   : "no step improves the initial map");
-  points.swap(p);
-  R.status = OK;
-  R.message = "Success";
-  return OK;
+  const Error_code verdict = report_verdict(out, R);
+  if(verdict == OK) points.swap(p);
+  return verdict;
 }
 
 } // namespace dlf

@@ -127,7 +127,7 @@ public:
       const std::size_t a = std::size_t(F[t][0]), b = std::size_t(F[t][1]), c = std::size_t(F[t][2]);
       return critical_step_sphere(m_p[a], m_p[b], m_p[c], m_d[a], m_d[b], m_d[c]);
     }, step.limiting);
-    step.lambda = m_opt.fixed_step > 0 ? m_opt.fixed_step : (std::min)(m_opt.paper.step_cap, step_fraction(m_opt) * step.critical);
+    step.lambda = paper_first_step(m_opt, step.critical);
   }
 
   /// Shrinks until every flowing face is positive (exact) and none collapses:
