@@ -43,7 +43,7 @@ MUTATIONS=(
 # bookkeeping, the public features, and flow runs on small disks.
 TESTS=(
   'Critical_step.*' 'Certification.*' 'Boundary_curve.*' 'Distortion.*' 'Errors.*' 'Run_flow.*'
-  'DensityRegions.ShareErrorCutsOnTheDensityValues' 'DensityRegions.ThreePeaksBallSharesWithinTheTolerance'
+  'DensityRegions.*' 'DensityExactness.*'
   'Features.*'
   'DataSet/Certified_disk.Circle/mushroom' 'DataSet/Certified_disk.Square/nefertiti'
   'DataSet/Free_border.Lscm/mushroom' 'DataSet/Paper_disk.Circle/mushroom'
