@@ -6,10 +6,8 @@
 # Exits non-zero if any check fails. Needs bash, awk, coreutils and python3
 # (reports are read with awk: the tool pretty-prints them, one field a line;
 # shares, XML and PNG are checked with python3); the check of in-place
-# progress needs `script`. DLF_CLI_TESTS=quick (the sanitizer job) skips the
-# runs that repeat what another run already exercises.
+# progress needs `script`.
 set -u
-QUICK=0; [ "${DLF_CLI_TESTS:-}" = quick ] && QUICK=1
 command -v python3 > /dev/null || { echo "FAIL: python3 not found (.ci/install-deps installs it)"; exit 1; }
 
 DLF=${1:?usage: cli_tests.sh PATH/TO/dlf MESHES_DIR}
@@ -196,8 +194,7 @@ check "square border: 0 inverted faces" equals "$(json_get square.json final inv
 # (the flow moves the free border of LSCM and ARAP): exit 0, converged after
 # some iterations, an OBJ whose score is the report's.
 MUSHROOM="$MESHES/mushroom.off"
-inits="tutte mvc dcp lscm arap"; [ "$QUICK" = 1 ] && inits="dcp lscm"
-for init in $inits; do
+for init in tutte mvc dcp lscm arap; do
   "$DLF" disk "$MUSHROOM" --init "$init" -o "init_$init.obj" --report "init_$init.json" -q 2> "init_$init.err"
   check "--init $init: exit 0, ok, converged" equals "$? $(json_get "init_$init.json" "" status) $(json_get "init_$init.json" "" stop_reason)" "0 ok converged"
   check "--init $init: the flow iterated" number_is "$(json_get "init_$init.json" "" iterations)" ">" 0
@@ -347,7 +344,6 @@ for l in open(sys.argv[1]):
 }
 
 # --- progress ------------------------------------------------------------------
-if [ "$QUICK" = 0 ]; then
 "$DLF" disk "$NEF" > progress.out 2>&1
 check "progress, not a terminal: one plain line per iteration" equals "$(grep -c '^  iteration ' progress.out)" \
   "$(grep '^  iterations ' progress.out | awk '{ print $2 }')"
@@ -362,7 +358,6 @@ if command -v script > /dev/null; then
   check "progress on a terminal: rewritten in place" bash -c "grep -q $'\r\e\\[K  iteration ' tty.out && [ \$(grep -c '^  iteration ' tty.out) -le 1 ]"
 fi
 
-fi
 
 # --- dlf info ------------------------------------------------------------------
 info_fits() { "$DLF" info "$1" | awk '/^  fits / { sub(/^  fits +/, ""); print; exit }'; }
@@ -480,7 +475,6 @@ check "score: too few vt is refused" bash -c "[ $? = 1 ] && grep -q 'vt' err.txt
 check "no temporaries left" no_temporaries
 
 # --- sphere, paper mode --------------------------------------------------------
-if [ "$QUICK" = 0 ]; then
 unit_points() { awk '/^v / { r = sqrt($2*$2 + $3*$3 + $4*$4); if(r < 1 - 1e-12 || r > 1 + 1e-12) bad = 1 } END { exit bad }' "$1"; }
 "$DLF" sphere "$MESHES/ellipsoid.off" --mode paper -o sphp.obj --report sphp.json --domain-mesh sphp_flow.obj --history -q
 check "sphere --mode paper: exit 0" equals "$?" 0
@@ -512,7 +506,6 @@ expect_error "sphere --no-flips needs paper mode" 1 "--no-flips applies to --mod
 expect_error "sphere --literal-targets needs paper mode" 1 "--literal-targets applies to --mode paper only" sphere "$MESHES/sphere.off" --literal-targets
 expect_error "sphere --mode paper: a torus is refused" 1 "ERROR_NOT_GENUS_0" sphere "$MESHES/pipe.off" --mode paper
 check "no temporaries left (sphere paper)" no_temporaries
-fi
 
 echo
 if [ "$failures" -ne 0 ]; then
