@@ -711,9 +711,7 @@ void expect_paper_run(const Flow_run& r, Border_shape shape, double max_d_area)
 
   // d_area on the flowing triangulation, recomputed with 3D targets of its faces.
   const double d = d_area(r.mesh.xyz, r.uv, dom);
-  // The goals (doc/paper_mode.md has the measured figures): 2.05 on
-  // the data set's disks, beating the prototype's 2.23 on lion-head and 3.32
-  // on mannequin-devil, at most 150 iterations.
+  // The bound of the small disks (doc/paper_mode.md has the measured figures).
   if(max_d_area > 0) EXPECT_LE(d, max_d_area);
   // A start already within the tolerance may end a little above it after the
   // first Delaunay flips (cylinder's square); any other run must improve.

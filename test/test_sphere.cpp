@@ -613,7 +613,7 @@ void check_sphere_map(const Sphere_case& c, const SM& sm)
 void check_sphere_map(const Sphere_case& c) { check_sphere_map(c, read_sphere_mesh(c.name)); }
 
 // ---------------------------------------------------------------------------
-// Generated shapes with long protrusions (issue: the start is the crux)
+// Generated shapes with long protrusions (the start is the crux)
 // ---------------------------------------------------------------------------
 
 /// The unit icosphere, each triangle split `level` times into four.
