@@ -138,8 +138,21 @@ Flow_run flow(Loaded& m, double tolerance, Setup setup)
 
 struct No_density { void operator()(Dlf&) const {} };
 
-/// Region shares for factors 0.25 … 16, exact orientation, and iterations
-/// against the plain run at the same tolerance.
+/// The README's promise for a density: every region, and the rest of the
+/// surface, within 0.5% of its prescribed share (relative), once converged.
+const double share_promise = 5e-3;
+
+/// The larger relative error of a region's share and of its complement's:
+/// `s.first` achieved, `s.second` prescribed.
+double region_and_complement_error(const std::pair<double, double>& s)
+{
+  return (std::max)(std::abs(s.first - s.second) / s.second,
+                    std::abs((1 - s.first) - (1 - s.second)) / (1 - s.second));
+}
+
+/// Region shares for factors 0.25 … 16 (the promise, with convergence) and
+/// exact orientation. (Their cost against the plain run is the benchmark's:
+/// benchmark/density.sh.)
 void check_region_factors(const std::string& name, const std::vector<SM_face>& region_faces, Loaded& m, double band)
 {
   const std::set<SM_face> region(region_faces.begin(), region_faces.end());
@@ -164,10 +177,8 @@ void check_region_factors(const std::string& name, const std::vector<SM_face>& r
     std::printf("  %-16s factor %5.2f: share %.5f prescribed, %.5f achieved (%+.3f%%), %zu iterations (%s), "
                 "%.2f x plain (%zu)\n", name.c_str(), factor, s.second, s.first, 100 * (s.first - s.second) / s.second,
                 r.iterations, r.stop.c_str(), ratio, plain.iterations);
-    EXPECT_LE(std::abs(s.first - s.second), 0.01 * s.second);
-    // Cost: within 2× of the plain run up to factor 4; factor 16 costs up
-    // to 2× on these meshes, more on others (doc/measure_control.md).
-    EXPECT_LE(ratio, factor <= 4 ? 2. : 2.5);
+    EXPECT_EQ(r.stop, "converged");
+    EXPECT_LE(region_and_complement_error(s), share_promise);
   }
 }
 
@@ -175,7 +186,7 @@ void check_region_factors(const std::string& name, const std::vector<SM_face>& r
 
 // A Euclidean ball around one of the three peaks (the peaks point to −y),
 // a density jump at its border (no band).
-TEST(DensityRegions, ThreePeaksBallSharesWithinOnePercent)
+TEST(DensityRegions, ThreePeaksBallSharesWithinTheTolerance)
 {
   Loaded m;
   load("three_peaks", m);
@@ -185,7 +196,7 @@ TEST(DensityRegions, ThreePeaksBallSharesWithinOnePercent)
 
 // A geodesic (edge-path) ball around a vertex of the bumped sheet, with a
 // transition band.
-TEST(DensityRegions, MeshWithBorderGeodesicBallSharesWithinOnePercent)
+TEST(DensityRegions, MeshWithBorderGeodesicBallSharesWithinTheTolerance)
 {
   Loaded m;
   load("mesh_with_border", m);
@@ -223,7 +234,7 @@ TEST(DensityRegions, ShareToleranceHoldsTheRegionsOfAFinerMesh)
       ASSERT_EQ(SMP::parameterize(m.sm, dlf, m.bhd, uv), SMP::OK) << dlf.report().message;
       EXPECT_EQ(inverted_or_flat(m.sm, uv), 0u);
       const std::pair<double, double> s = shares(m.sm, region, uv, rho);
-      const double error = std::abs(s.first - s.second) / (std::min)(s.second, 1 - s.second);
+      const double error = region_and_complement_error(s);
       std::printf("  nefertiti+loop1 factor %4.2f share tolerance %g: %+.3f%%, %zu iterations (%s)\n", factor,
                   share_tolerance, 100 * (s.first - s.second) / s.second, dlf.report().iterations,
                   SMP::discrete_lie_flow_stop_reason_name(dlf.report().stop_reason));
@@ -231,7 +242,7 @@ TEST(DensityRegions, ShareToleranceHoldsTheRegionsOfAFinerMesh)
       EXPECT_NEAR(dlf.report().final_share_error, error, 1e-9);
       if(share_tolerance == 0) { worst_without = (std::max)(worst_without, error); continue; }
       EXPECT_EQ(dlf.report().stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED);
-      EXPECT_LE(error, share_tolerance);
+      EXPECT_LE(error, share_promise);
     }
   }
   // Without the test on shares, some region misses the 1% goal: the mesh

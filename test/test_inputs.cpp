@@ -121,6 +121,9 @@ double d_area(const Indexed& m)
 
 /// A valid, area-preserving result: finite, every face of one strict
 /// orientation (exact), d_area within the bound.
+/// The README's promise: D_area ≤ 2.01, the default tolerance.
+const double certified_d_area_bound = 2 + SMP::Discrete_lie_flow_options().tolerance;
+
 void expect_good_map(const Indexed& m, double bound)
 {
   for(const V2& p : m.uv) ASSERT_TRUE(std::isfinite(p[0]) && std::isfinite(p[1]));
@@ -218,14 +221,15 @@ TEST(Mesh_types, SurfaceMeshTemporaryAndNamed)
   const SM_halfedge bhd = border_halfedge(sm);
   auto uv = sm.add_property_map<SM_vertex, Point_2>("v:uv").first;
   EXPECT_EQ(SMP::parameterize(sm, SM_dlf(), bhd, uv), SMP::OK);
-  expect_good_map(extract(sm, uv), 2.02);
+  expect_good_map(extract(sm, uv), certified_d_area_bound);
   for(SM_vertex v : vertices(sm)) uv[v] = Point_2(0, 0);
   SM_dlf p;
   EXPECT_EQ(SMP::parameterize(sm, p, bhd, uv), SMP::OK);
   const Indexed m = extract(sm, uv);
-  expect_good_map(m, 2.02);
+  expect_good_map(m, certified_d_area_bound);
   // The named object passed by value still sees its run.
   EXPECT_EQ(p.report().status, SMP::OK);
+  EXPECT_EQ(p.report().stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED);
   EXPECT_GT(p.report().iterations, 0u);
   EXPECT_NEAR(p.report().final_d_area, d_area(m), 1e-9);
   EXPECT_EQ(p.report().domain_faces.size(), num_faces(sm));
@@ -247,7 +251,7 @@ TEST(Mesh_types, Polyhedron3TemporaryAndNamed)
     UV_uhm uhm;
     boost::associative_property_map<UV_uhm> uv(uhm);
     EXPECT_EQ(SMP::parameterize(poly, Poly_dlf(), bhd, uv), SMP::OK);
-    expect_good_map(extract(poly, uv), 2.02);
+    expect_good_map(extract(poly, uv), certified_d_area_bound);
   }
   {
     UV_uhm uhm;
@@ -255,8 +259,9 @@ TEST(Mesh_types, Polyhedron3TemporaryAndNamed)
     Poly_dlf p;
     EXPECT_EQ(SMP::parameterize(poly, p, bhd, uv), SMP::OK);
     const Indexed m = extract(poly, uv);
-    expect_good_map(m, 2.02);
+    expect_good_map(m, certified_d_area_bound);
     EXPECT_EQ(p.report().status, SMP::OK);
+    EXPECT_EQ(p.report().stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED);
     EXPECT_GT(p.report().iterations, 0u);
     EXPECT_NEAR(p.report().final_d_area, d_area(m), 1e-9);
   }
@@ -313,13 +318,14 @@ TEST(Mesh_types, SeamMeshOfAClosedSphereTemporaryAndNamed)
   UV_pmap uv = sm.add_property_map<SM_halfedge, Point_2>("h:uv").first;
   EXPECT_EQ(SMP::parameterize(mesh, Seam_dlf(), bhd, uv), SMP::OK);
   const Indexed m1 = extract(mesh, uv);
-  expect_good_map(m1, 2.02);
+  expect_good_map(m1, certified_d_area_bound);
   for(SM_halfedge h : halfedges(sm)) uv[h] = Point_2(0, 0);
   Seam_dlf p;
   EXPECT_EQ(SMP::parameterize(mesh, p, bhd, uv), SMP::OK) << p.report().message;
   const Indexed m = extract(mesh, uv);
-  expect_good_map(m, 2.02);
+  expect_good_map(m, certified_d_area_bound);
   EXPECT_EQ(p.report().status, SMP::OK);
+  EXPECT_EQ(p.report().stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED);
   EXPECT_GT(p.report().iterations, 0u);
   EXPECT_NEAR(p.report().final_d_area, d_area(m), 1e-9);
   // The two sides of the seam are apart in the domain.

@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# Runs one program of examples/ on a real mesh and checks what it printed
+# (and wrote) against what the example says it does.
+#
+#   bash test/example_checks.sh NAME PATH/TO/EXECUTABLE MESHES_DIR
+#
+# Exits non-zero on a failed run or a failed check.
+set -u
+NAME=${1:?usage: example_checks.sh NAME EXECUTABLE MESHES_DIR}
+EXE=${2:?}
+MESHES=${3:?}
+WORK=$(mktemp -d "${TMPDIR:-/tmp}/dlf_example.XXXXXX")
+trap 'rm -rf "$WORK"' EXIT
+
+fail() { echo "FAIL: $*"; exit 1; }
+
+case $NAME in
+area_preserving_disk)
+  # "MESH: N vertices, area distortion A -> B (optimum 2) in K iterations (STOP)"
+  out=$("$EXE" "$MESHES/mushroom.off") || fail "exit $?"
+  echo "$out"
+  echo "$out" | awk '
+    / area distortion / {
+      for(i = 1; i <= NF; ++i) { if($i == "distortion") { a = $(i + 1); b = $(i + 3) } if($i == "in") k = $(i + 1) }
+      stop = $NF
+      seen = 1
+    }
+    END {
+      if(!seen) { print "no result line"; exit 1 }
+      if(!(a + 0 > 2.01)) { print "the start is already within the tolerance: nothing was tested"; exit 1 }
+      if(!(b + 0 >= 2 && b + 0 <= 2.01)) { print "final D_area " b " not in [2, 2.01]"; exit 1 }
+      if(!(k + 0 > 0)) { print "no iteration"; exit 1 }
+      if(stop != "(converged)") { print "stopped " stop; exit 1 }
+    }' || fail "output"
+  ;;
+sphere_map)
+  out=$("$EXE" "$MESHES/blobby.off") || fail "exit $?"
+  echo "$out"
+  echo "$out" | grep -q '^status: ok ' || fail "status"
+  echo "$out" | grep -q '^inverted faces: 0, degenerate faces: 0$' || fail "inverted or degenerate faces"
+  echo "$out" | awk '
+    /^flow: / {
+      seen = 1
+      for(i = 1; i <= NF; ++i) { if($i == "stop:") stop = $(i + 1); if($i == "d_area") d = $(i + 1); if($i == "/") mean = $(i - 1) }
+      sub(/,$/, "", stop); sub(/,$/, "", d)
+    }
+    END {
+      if(!seen) { print "no flow line"; exit 1 }
+      if(stop != "converged") { print "stopped " stop; exit 1 }
+      if(!(d + 0 >= 2 && d + 0 <= 2.01)) { print "D_area " d " not in [2, 2.01]"; exit 1 }
+      if(!(mean + 0 <= 0.02)) { print "mean |log area ratio| " mean " above 0.02"; exit 1 }
+    }' || fail "output"
+  ;;
+measure_controlled)
+  # A ball on nefertiti; each factor's row: the region's share and the
+  # rest's within 0.5% of the prescribed ones, converged, no fold; one
+  # well-formed SVG per factor.
+  out=$("$EXE" "$WORK" "$MESHES/nefertiti.off" -0.215988 -0.081660 0.215680 1) || fail "exit $?"
+  echo "$out"
+  echo "$out" | awk '
+    $1 ~ /^[0-9.]+$/ && NF >= 8 {
+      rows++
+      p = $2 + 0; q = $3 + 0
+      e = (q > p ? q - p : p - q); e = (e / p > e / (1 - p) ? e / p : e / (1 - p))
+      if(e > 0.005) { print "factor " $1 ": share error " e; bad = 1 }
+      if($6 != "converged") { print "factor " $1 ": stopped " $6; bad = 1 }
+      if($7 != "0") { print "factor " $1 ": " $7 " inverted faces"; bad = 1 }
+    }
+    END { if(rows != 6) { print rows " rows, expected 6"; exit 1 } exit bad }' || fail "output"
+  for f in 1 0.25 0.5 2 4 16; do
+    svg="$WORK/measure_controlled_$f.svg"
+    [ -s "$svg" ] || fail "$svg not written"
+    python3 -c 'import sys, xml.etree.ElementTree as ET; ET.parse(sys.argv[1])' "$svg" || fail "$svg is not well-formed"
+  done
+  ;;
+*)
+  fail "no check for example '$NAME' (add one here)"
+  ;;
+esac
+echo "ok: $NAME"
