@@ -31,8 +31,10 @@ MUTATIONS=(
   "critical root of the quadratic with the wrong sign|$DLF/critical_step.h|take(q / a);|take(-q / a);"
   "linear term of the signed-area quadratic with a wrong sign|$DLF/critical_step.h|ex * hy - ey * hx + gx * fy - gy * fx|ex * hy - ey * hx - gx * fy + gy * fx"
   "exact certification dropped (every triangle counted positive)|$DLF/certification.h|if(o == CGAL::POSITIVE) continue;|continue;"
-  "area lumping skips a corner of every face|$DLF/disk_problem.h|for(int k = 0; k < 3; ++k) out[faces[f][k]] += value[f] / 3;|for(int k = 0; k < 2; ++k) out[faces[f][k]] += value[f] / 3;"
-  "report's targets lumped on the input faces instead of the flowing ones|$INC/Discrete_lie_flow_parameterizer_3.h|D::lump_on_vertices(uv.size(), domain, target_on_domain, R.target_area);|D::lump_on_vertices(uv.size(), P.faces, target_on_domain, R.target_area);"
+  "area lumping skips a corner of every face|$DLF/area_elements.h|for(int k = 0; k < 3; ++k) out[faces[f][k]] += value[f] / 3;|for(int k = 0; k < 2; ++k) out[faces[f][k]] += value[f] / 3;"
+  "report's target areas lumped from the domain's areas instead of the targets|$DLF/disk_flow.h|lump_on_vertices(p.size(), out.domain_faces, out.domain_target, R.target_area);|lump_on_vertices(p.size(), out.domain_faces, u, R.target_area);"
+  "plateau test the wrong way round (every run stops early)|$DLF/flow_driver.h|back(m_rules.plateau_window) - x < m_rules.plateau_tolerance * (x - 1)|back(m_rules.plateau_window) - x > m_rules.plateau_tolerance * (x - 1)"
+  "paper mode keeps the targets of flipped faces (no retargeting)|$DLF/planar_paper_flow.h|m_target[std::size_t(f)] = m_targets(m_tri.faces[std::size_t(f)]); }|(void)f; }"
   "density ignored (targets are the surface areas)|$INC/Discrete_lie_flow_parameterizer_3.h|P.target[f] = rho * a;|P.target[f] = a;"
   "share error relative to the larger side (too lenient)|$DLF/density_levels.h|/ (std::min)(p, 1 - p);|/ (std::max)(p, 1 - p);"
   "circle fitted 0.01% too large (border off the circle)|$DLF/boundary_curve.h|radius = r / double(pts.size());|radius = 1.0001 * r / double(pts.size());"
@@ -44,7 +46,7 @@ MUTATIONS=(
 TESTS=(
   'Critical_step.*' 'Certification.*' 'Boundary_curve.*' 'Distortion.*' 'Errors.*' 'Run_flow.*'
   'DensityRegions.*' 'DensityExactness.*'
-  'Features.*'
+  'Features.*' 'Area_elements.*'
   'DataSet/Certified_disk.Circle/mushroom' 'DataSet/Certified_disk.Square/nefertiti'
   'DataSet/Free_border.Lscm/mushroom' 'DataSet/Paper_disk.Circle/mushroom'
 )

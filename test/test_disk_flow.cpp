@@ -480,7 +480,7 @@ void expect_certified_run(const Flow_run& r, Border_shape shape)
   ASSERT_EQ(r.code, SMP::OK) << SMP::discrete_lie_flow_error_name(r.code) << ": " << r.report.message;
   EXPECT_EQ(r.report.status, SMP::OK);
   EXPECT_EQ(r.report.stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED)
-    << "stopped: " << SMP::stop_reason_name(r.report.stop_reason) << " after " << r.report.iterations << " iterations";
+    << "stopped: " << SMP::discrete_lie_flow_stop_reason_name(r.report.stop_reason) << " after " << r.report.iterations << " iterations";
   ASSERT_EQ(r.uv.size(), r.mesh.xyz.size());
   ASSERT_EQ(r.uv0.size(), r.mesh.xyz.size());
   for(const V2& p : r.uv) ASSERT_TRUE(std::isfinite(p[0]) && std::isfinite(p[1]));

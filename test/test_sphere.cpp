@@ -812,7 +812,7 @@ TEST(Sphere_data_set, EveryClosedGenus0Mesh)
     SCOPED_TRACE(file.filename().string());
     const Index_mesh m = index_mesh(sm);
     std::vector<V3> p;
-    const SMP::Discrete_lie_flow_sphere_report r = map_to_sphere(sm, p);
+    const SMP::Discrete_lie_flow_report r = map_to_sphere(sm, p);
     ASSERT_EQ(r.status, SMP::OK) << r.message;
     for(const V3& q : p) ASSERT_NEAR(std::sqrt(D::dot(q, q)), 1., 1e-12);
     const Sphere_signs s = exact_sphere_signs(p, m.faces);
@@ -823,7 +823,7 @@ TEST(Sphere_data_set, EveryClosedGenus0Mesh)
     if(r.stop_reason == SMP::Discrete_lie_flow_stop_reason::CONVERGED && d.second <= SMP::Discrete_lie_flow_options().log_area_tolerance)
       ++all_goals;
     std::cout << "[sphere data set] " << file.filename().string() << ": " << m.faces.size() << " faces, d_area "
-              << d.first << ", mean |log r| " << d.second << " (" << SMP::stop_reason_name(r.stop_reason) << ")" << std::endl;
+              << d.first << ", mean |log r| " << d.second << " (" << SMP::discrete_lie_flow_stop_reason_name(r.stop_reason) << ")" << std::endl;
   }
   EXPECT_EQ(meshes, 34u) << "the data set changed: the README's claim counts 34 meshes";
   EXPECT_GE(all_goals, 28u);
@@ -902,7 +902,7 @@ TEST(Sphere_map, DensityDoublesTheAreaOfAHemisphere)
   }
   // The README's promise: converged with each region's share (of the flat
   // triangles' area, the measure the flow holds) within 0.5%, relative.
-  EXPECT_EQ(r.stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED) << SMP::stop_reason_name(r.stop_reason);
+  EXPECT_EQ(r.stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED) << SMP::discrete_lie_flow_stop_reason_name(r.stop_reason);
   const long double prescribed = 2 * heavy3 / (2 * heavy3 + light3), achieved = heavy / (heavy + light);
   EXPECT_LE(double(std::fabs(achieved - prescribed) / prescribed), 5e-3);
   EXPECT_LE(double(std::fabs(achieved - prescribed) / (1 - prescribed)), 5e-3);
