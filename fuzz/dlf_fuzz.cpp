@@ -87,7 +87,7 @@ void run_disk(const Indexed_mesh& mesh, SMP::Discrete_lie_flow_mode mode)
   options.max_iterations = flow_iterations;
   Parameterizer parameterizer(Parameterizer::Initial_parameterizer(), options);
   const SMP::Error_code code = parameterizer.parameterize(sm, bhd, uvmap, vimap, vpmap);
-  const SMP::Discrete_lie_flow_report& R = report;
+  const SMP::Discrete_lie_flow_report& R = parameterizer.report();
   if(!known_status(code) || R.status != code) violation("disk: unknown or inconsistent status");
   if(code != SMP::OK) {
     if(R.message.empty()) violation("disk: error without a message");

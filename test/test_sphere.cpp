@@ -820,7 +820,7 @@ TEST(Sphere_data_set, EveryClosedGenus0Mesh)
     const std::pair<double, double> d = sphere_d_area(m.xyz, p, m.faces);
     EXPECT_LE(d.first, 2 + SMP::Discrete_lie_flow_options().tolerance);
     EXPECT_NEAR(r.final_d_area, d.first, 1e-9 * d.first);
-    if(r.stop_reason == SMP::Discrete_lie_flow_stop_reason::CONVERGED && d.second <= SMP::Discrete_lie_flow_options().log_area_tolerance)
+    if(r.stop_reason == SMP::Discrete_lie_flow_stop_reason::CONVERGED && d.second <= SMP::Discrete_lie_flow_options().sphere.log_area_tolerance)
       ++all_goals;
     std::cout << "[sphere data set] " << file.filename().string() << ": " << m.faces.size() << " faces, d_area "
               << d.first << ", mean |log r| " << d.second << " (" << SMP::discrete_lie_flow_stop_reason_name(r.stop_reason) << ")" << std::endl;
