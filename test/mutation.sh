@@ -51,7 +51,7 @@ TESTS=(
   'DataSet/Free_border.Lscm/mushroom' 'DataSet/Paper_disk.Circle/mushroom'
 )
 # The test files those tests live in (the others are not built here).
-SOURCES=(test_numerics.cpp test_inputs.cpp test_density.cpp test_features.cpp test_disk_flow.cpp)
+SOURCES=(test_numerics.cpp test_inputs.cpp test_density.cpp test_features.cpp test_disk_flow.cpp test_area_elements.cpp)
 
 selected=("$@")
 if ((${#selected[@]} == 0)); then selected=($(seq 1 ${#MUTATIONS[@]})); fi
