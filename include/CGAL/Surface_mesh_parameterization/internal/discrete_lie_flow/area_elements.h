@@ -87,9 +87,6 @@ public:
     for(std::size_t v = 0; v < m_rho.size(); ++v) m_rho[v] = den[v] > 0 ? m_rho[v] / den[v] : 1.;
   }
 
-  /// The per-vertex density ρ.
-  const std::vector<double>& vertex_density() const { return m_rho; }
-
   /// The target of the triangle `t` created by a flip.
   double operator()(const Face& t) const
   {

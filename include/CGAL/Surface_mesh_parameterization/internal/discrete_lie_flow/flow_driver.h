@@ -120,8 +120,7 @@ public:
 
   explicit Flow_stopping(const Rules& rules) : m_rules(rules) {}
 
-  /// Restarts the progress sequence (a new phase of the flow), from `x0` if given.
-  void restart() { m_history.clear(); }
+  /// Restarts the progress sequence from `x0` (the start, or a new phase of the flow).
   void restart(double x0) { m_history.assign(1, x0); }
 
   /// Records the iteration's progress value; the reason to stop, or

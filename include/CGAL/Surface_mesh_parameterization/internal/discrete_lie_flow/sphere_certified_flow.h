@@ -424,17 +424,6 @@ private:
   const Density_levels m_levels;
 };
 
-/// Runs the certified spherical flow from the positively oriented unit
-/// vectors `p` (modified in place; always certified and not worse than the start).
-template <class EigenSolver>
-Flow_outcome certified_sphere_flow(const Sphere_problem& P, std::vector<Vec3>& p,
-                                   const Discrete_lie_flow_options& opt, EigenSolver& eigen_solver,
-                                   const Sphere_flow_settings& settings = Sphere_flow_settings())
-{
-  Sphere_certified_flow<EigenSolver> flow(P, p, opt, eigen_solver, settings);
-  return run_flow(flow, opt);
-}
-
 } // namespace dlf
 } // namespace internal
 } // namespace Surface_mesh_parameterization

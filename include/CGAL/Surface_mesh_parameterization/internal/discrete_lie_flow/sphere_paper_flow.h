@@ -35,12 +35,6 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace dlf {
 
-/// What the paper's flow on the sphere returns besides the outcome of every flow.
-struct Sphere_paper_outcome : Flow_outcome
-{
-  std::size_t non_delaunay_edges = 0; ///< edges of `domain_faces` left non-Delaunay (0 with flips on)
-};
-
 /// The paper's spherical flow as a policy of `run_flow()` (flow_driver.h),
 /// from the positively oriented unit vectors `p`. On return, `p` is the best
 /// iterate (lowest D_area on the flowing triangulation, flat triangles
@@ -247,19 +241,6 @@ private:
   bool m_best_converged = false;
   std::size_t m_flips = 0, m_non_delaunay_edges = 0;
 };
-
-/// Runs the paper's spherical flow (Sphere_paper_flow) from the positively
-/// oriented unit vectors `p`.
-template <class EigenSolver>
-Sphere_paper_outcome paper_sphere_flow(const Sphere_problem& P, std::vector<Vec3>& p,
-                                       const Discrete_lie_flow_options& opt, EigenSolver& eigen_solver)
-{
-  Sphere_paper_flow<EigenSolver> flow(P, p, opt, eigen_solver);
-  Sphere_paper_outcome out;
-  static_cast<Flow_outcome&>(out) = run_flow(flow, opt);
-  out.non_delaunay_edges = flow.non_delaunay_edges();
-  return out;
-}
 
 } // namespace dlf
 } // namespace internal
