@@ -22,9 +22,13 @@ using dlf_cli::Cli_error;
 using dlf_cli::Indexed_mesh;
 
 // Writes `text` to a scratch file with the given extension and reads it.
+// CTest runs each test as its own process, several at once: the file is
+// named after the test, so two tests never share it.
 Indexed_mesh read_text(const std::string& text, const std::string& extension = ".off")
 {
-  const std::string path = testing::TempDir() + "dlf_regression" + extension;
+  const testing::TestInfo* test = testing::UnitTest::GetInstance()->current_test_info();
+  const std::string path = testing::TempDir() + "dlf_regression_" + test->test_suite_name() + "_" + test->name() +
+                           extension;
   {
     std::ofstream out(path, std::ios::binary);
     out << text;
