@@ -609,10 +609,12 @@ json run_dlf(const std::string& dlf, const Case& c, const std::string& file, con
     if(have && R.contains("rejected_by_exact_check")) r["rejected_by_exact_check"] = R["rejected_by_exact_check"];
     if(have && R.contains("iterations")) r["iterations"] = R["iterations"];
     if(have && R.contains("stop_reason")) r["stop_reason"] = R["stop_reason"];
-    if(p.code != 0 && fs::exists(out)) r["stray_output"] = true;
-    if(p.code == 0 && r["status"] != "ok") r["exit_status_mismatch"] = true;
-    if(p.code != 0 && r["status"] == "ok") r["exit_status_mismatch"] = true;
-    if(p.code == 0) {
+    // Exit 0: "ok"; exit 3: "not_converged", a valid map written all the same.
+    const bool wrote = p.code == 0 || p.code == 3;
+    if(!wrote && fs::exists(out)) r["stray_output"] = true;
+    if((p.code == 0) != (r["status"] == "ok") || (p.code == 3) != (r["status"] == "not_converged"))
+      r["exit_status_mismatch"] = true;
+    if(wrote) {
       std::vector<P3> v;
       std::vector<std::array<double, 2> > vt;
       std::vector<std::array<int, 3> > F;
@@ -812,7 +814,7 @@ bool is_violation(const json& r, std::string& what)
   if(s == "hang") { what = "hang"; return true; }
   if(s == "exception") { what = "exception escaped"; return true; }
   if(r.value("nonfinite", false)) { what = "NaN/Inf in output"; return true; }
-  if(s == "ok" && (r.value("inverted", 0) > 0 || r.value("degenerate", 0) > 0)) { what = "inverted/degenerate faces in an ok result"; return true; }
+  if((s == "ok" || s == "not_converged") && (r.value("inverted", 0) > 0 || r.value("degenerate", 0) > 0)) { what = "inverted/degenerate faces in an ok result"; return true; }
   if(r.value("stray_output", false)) { what = "output file left by a failed run"; return true; }
   if(r.value("exit_status_mismatch", false)) { what = "exit code disagrees with report status"; return true; }
   if(r.value("unreadable_output", false)) { what = "unreadable output"; return true; }

@@ -122,8 +122,11 @@ check "sphere --roi-ball: converged" equals "$(json_get sph_roi.json "" stop_rea
 check "sphere --roi-ball: region and rest within 0.5% of their shares (recomputed)" \
   shares_within "$MESHES/sphere.off" sph_roi.obj 0 0 1 0.8 4 0.005
 awk '!/^#/ && NF' "$MESHES/sphere.off" | sed -n 2p | awk '{ for(i = 0; i < $2; ++i) print (i % 2 ? 1 : 3) }' > sph_rho.txt
-"$DLF" sphere "$MESHES/sphere.off" --density sph_rho.txt --report sph_rho.json -q
-check "sphere --density per face: exit 0" equals "$?" 0
+"$DLF" sphere "$MESHES/sphere.off" --density sph_rho.txt --report sph_rho.json -q 2> sph_rho.err
+# Alternating densities 1 and 3 on the faces of a coarse sphere: the flow
+# plateaus just above the goal, and says so (exit 3, a valid map written).
+check "sphere --density per face: exit 0, or 3 with status not_converged and a warning" bash -c \
+  "[ $? = 0 ] && grep -q '\"status\": \"ok\"' sph_rho.json || { grep -q '\"status\": \"not_converged\"' sph_rho.json && grep -q 'dlf: warning: not converged' sph_rho.err; }"
 check "sphere --density per face: density in the report" equals "$(json_get sph_rho.json density max)" 3.0
 "$DLF" sphere "$MESHES/sphere.off" --log-area-tolerance 0 --report sph0.json -q
 check "sphere --log-area-tolerance 0: exit 0, converged" equals "$? $(json_get sph0.json "" stop_reason)" "0 converged"
@@ -184,6 +187,14 @@ check "paper mode exits 0" equals "$?" 0
 check "--verbose prints one line per iteration" equals "$(grep -c '^  iteration ' verbose.out)" \
   "$(grep '^  iterations ' verbose.out | awk '{ print $2 }')"
 check "paper mode: status ok" equals "$(json_get paper.json "" status)" ok
+# Stopped short of the targets: not "Success", yet every output is written.
+"$DLF" disk "$MESHES/lion-head.off" --max-iterations 2 -o cap.obj --report cap.json -q 2> cap.err
+check "--max-iterations 2: exit 3, status not_converged, the map written" bash -c \
+  "[ $? = 3 ] && [ -s cap.obj ] && grep -q '\"status\": \"not_converged\"' cap.json && grep -q '\"stop_reason\": \"iteration_cap\"' cap.json"
+check "--max-iterations 2: the warning says where it stopped and what to try" bash -c \
+  "grep -q 'not converged.*iteration_cap.*after 2 iterations' cap.err && grep -q -- '--max-iterations' cap.err"
+check "--max-iterations 2: the written map scores as reported" bash -c \
+  "'$DLF' score '$MESHES/lion-head.off' cap.obj --report cap_score.json -q && python3 -c \"import json,sys; a=json.load(open('cap.json'))['final']['d_area']; b=json.load(open('cap_score.json'))['metrics']['d_area']; sys.exit(abs(a-b) > 1e-9*a)\""
 check "paper mode: flips counted" number_is "$(json_get paper.json "" flips)" ">" 0
 "$DLF" disk "$NEF" --border square -o square.obj --report square.json -q
 check "square border exits 0" equals "$?" 0
@@ -476,10 +487,12 @@ check "no temporaries left" no_temporaries
 
 # --- sphere, paper mode --------------------------------------------------------
 unit_points() { awk '/^v / { r = sqrt($2*$2 + $3*$3 + $4*$4); if(r < 1 - 1e-12 || r > 1 + 1e-12) bad = 1 } END { exit bad }' "$1"; }
-"$DLF" sphere "$MESHES/ellipsoid.off" --mode paper -o sphp.obj --report sphp.json --domain-mesh sphp_flow.obj --history -q
-check "sphere --mode paper: exit 0" equals "$?" 0
-check "sphere --mode paper: status ok, mode in the report" equals \
-  "$(json_get sphp.json "" status) $(json_get sphp.json "" mode)" "ok paper"
+"$DLF" sphere "$MESHES/ellipsoid.off" --mode paper -o sphp.obj --report sphp.json --domain-mesh sphp_flow.obj --history -q 2> sphp.err
+# The paper's flow stops on a plateau just above the goal here: exit 3,
+# "not_converged", every output written all the same.
+check "sphere --mode paper: exit code and status agree (0 ok, or 3 not_converged)" bash -c \
+  "case $?:\$(python3 -c \"import json; print(json.load(open('sphp.json'))['status'])\") in 0:ok|3:not_converged) exit 0;; *) exit 1;; esac"
+check "sphere --mode paper: mode in the report" equals "$(json_get sphp.json "" mode)" "paper"
 check "sphere --mode paper: a stop reason" grep -Eq '"stop_reason": "(converged|plateau|stalled|iteration_cap)"' sphp.json
 check "sphere --mode paper: flips counted" awk -v f="$(json_get sphp.json "" flips)" 'BEGIN { exit !(f > 0) }'
 check "sphere --mode paper: flowing triangulation never folded, Delaunay" equals \

@@ -10,7 +10,13 @@
 // The reader is part of the `dlf` tool, not of the library, and the test
 // executable does not link the tool's objects: compile it in.
 #include "../examples/dlf/mesh_input.cpp"
+#include "../examples/dlf/surface_mesh.h"
 
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_parameterizer_3.h>
+
+#include <Eigen/SparseCholesky>
+
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
@@ -117,4 +123,42 @@ TEST(Regression, TexturedOffWithoutTextureValuesIsRead)
   ASSERT_EQ(m.xyz.size(), 3u);
   EXPECT_EQ(m.xyz[2][1], 1.);
   EXPECT_EQ(m.faces[0][2], 2);
+}
+
+// A relaxation sweep evaluated a moved face's area with its corners rotated
+// (the moved vertex first), the flow then recomputed it in the face's own
+// order: on a strip of needles 10⁶ away from the origin the two roundings
+// disagreed on the sign of one area, and the certified run reported d_area
+// +inf (found with Eigen's LDLᵀ, the solver the fuzz target links).
+TEST(Regression, RelaxationAndFlowAgreeOnTheSignOfEveryArea)
+{
+  const Indexed_mesh mesh = read_text(
+    "OFF\n16 18 0\n"
+    "1000000 1000000 0\n1000001 1000000 5e-07\n1000002 1000000 1e-06\n1000003 1000000 2.5e-07\n"
+    "100 1000001 7.5e-07\n1000001 1000001 0\n1000002 1000001 5e-07\n1000003 1005001 1e-06\n"
+    "1000000 1000002 2.5e-07\n1000001 1000002 72147483647\n1000002 1000002 0\n100000 31000002 4.99\n"
+    "1000000 1000003 1e-06\n100000110 3 2.49999999999999\n1000002 1000003 7.5e-07\n1647412 1000003 0\n"
+    "3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n3 2 3 7\n3 2 7 6\n3 4 5 9\n3 4 9 8\n3 5 6 10\n"
+    "3 5 10 9\n3 6 7 11\n3 6 11 10\n3 8 9 13\n3 8 13 12\n3 9 10 14\n3 9 14 13\n3 10 11 15\n3 10 15 14\n");
+  namespace SMP = CGAL::Surface_mesh_parameterization;
+  typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> > Ldlt;
+  typedef SMP::Discrete_lie_flow_parameterizer_3<dlf_cli::Surface_mesh, CGAL::Default, Ldlt> Parameterizer;
+  dlf_cli::Surface_mesh sm;
+  dlf_cli::build_surface_mesh(mesh, sm);
+  dlf_cli::halfedge_descriptor bhd = boost::graph_traits<dlf_cli::Surface_mesh>::null_halfedge();
+  for(dlf_cli::halfedge_descriptor h : halfedges(sm))
+    if(is_border(h, sm)) { bhd = h; break; }
+  auto uvmap = sm.add_property_map<dlf_cli::vertex_descriptor, dlf_cli::Kernel::Point_2>("v:uv").first;
+  auto vimap = sm.add_property_map<dlf_cli::vertex_descriptor, int>("v:index", -1).first;
+  auto vpmap = sm.add_property_map<dlf_cli::vertex_descriptor, bool>("v:parameterized", false).first;
+  for(dlf_cli::vertex_descriptor v : vertices(sm)) put(vimap, v, int(v.idx()));
+  SMP::Discrete_lie_flow_options options;
+  options.max_iterations = 20;
+  Parameterizer parameterizer(Parameterizer::Initial_parameterizer(), options);
+  ASSERT_EQ(parameterizer.parameterize(sm, bhd, uvmap, vimap, vpmap), SMP::OK);
+  const SMP::Discrete_lie_flow_report& R = parameterizer.report();
+  EXPECT_TRUE(std::isfinite(R.final_d_area)) << R.final_d_area;
+  EXPECT_LE(R.final_d_area, R.initial_d_area);
+  EXPECT_EQ(R.caller_inverted_faces, 0u);
+  EXPECT_NEAR(R.final_metrics.d_area, R.final_d_area, 1e-9);
 }

@@ -165,8 +165,10 @@ const char* disk_examples =
   "Progress: one line per iteration (iteration, step, residual, d_area, elapsed), rewritten in\n"
   "place when stdout is a terminal, plain lines otherwise; -q silences it, -v adds details.\n"
   "\n"
-  "Exit status: 0 success, 1 usage error or unsuitable input (unreadable, not a disk,\n"
-  "degenerate triangles, ...), 2 the flow failed (e.g. the initial map folds). When the\n"
+  "Exit status: 0 success (converged), 1 usage error or unsuitable input (unreadable, not a\n"
+  "disk, degenerate triangles, ...), 2 the flow failed (e.g. the initial map folds), 3 a\n"
+  "valid, fold-free map was written but the flow stopped short of its targets (iteration\n"
+  "cap, plateau, stall: status \"not_converged\", with what to try on stderr). When the\n"
   "parameterizer reports an error, only the report is written, with the error's status.\n";
 
 } // namespace

@@ -17,7 +17,8 @@ enum Exit_code
 {
   EXIT_OK = 0,
   EXIT_BAD_INPUT = 1,   ///< usage error, unreadable or unsuitable input, output not writable
-  EXIT_FLOW_ERROR = 2   ///< the parameterizer returned an error (or the command is not available)
+  EXIT_FLOW_ERROR = 2,  ///< the parameterizer returned an error (or the command is not available)
+  EXIT_NOT_CONVERGED = 3 ///< a valid, fold-free map was written, but the flow stopped short of its targets
 };
 
 class Cli_error : public std::runtime_error

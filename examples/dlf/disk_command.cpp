@@ -13,6 +13,7 @@
 #include "obj_io.h"
 #include "output_files.h"
 #include "progress.h"
+#include "verdict.h"
 
 #include <nlohmann/json.hpp>
 
@@ -102,7 +103,7 @@ json make_report(const Disk_settings& s, const Indexed_mesh& mesh, const Disk_ru
 {
   const SMP::Discrete_lie_flow_report& R = run.report;
   json j;
-  j["status"] = SMP::discrete_lie_flow_error_name(run.status);
+  j["status"] = run_status(run.status, R);
   j["message"] = R.message;
   j["input"] = s.input;
   j["vertices"] = mesh.xyz.size();
@@ -145,7 +146,7 @@ void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh
   out << std::setprecision(8);
   out << "dlf disk " << s.input << ": " << mesh.xyz.size() << " vertices, " << mesh.faces.size() << " faces\n"
       << "  mode " << s.mode << ", init " << s.init << ", border " << used_border(run, s) << "\n"
-      << "  status " << SMP::discrete_lie_flow_error_name(run.status) << ": " << R.message << "\n"
+      << "  status " << run_status(run.status, R) << ": " << R.message << "\n"
       << "  iterations " << R.iterations << " (" << SMP::discrete_lie_flow_stop_reason_name(R.stop_reason) << ")\n";
   if(initial) {
     out << "  d_area " << initial->d_area;
@@ -248,7 +249,7 @@ int disk_command(const std::vector<std::string>& args)
   if(!ok)
     throw Cli_error(s.input + ": " + SMP::discrete_lie_flow_error_name(run.status) + ": " + run.report.message,
                     is_input_error(run.status) ? EXIT_BAD_INPUT : EXIT_FLOW_ERROR);
-  return EXIT_OK;
+  return exit_code_of_ok_run(run.report, true);
 }
 
 } // namespace dlf_cli

@@ -13,6 +13,7 @@
 #include "mesh_input.h"
 #include "output_files.h"
 #include "progress.h"
+#include "verdict.h"
 #include "svg_common.h"
 #include "svg_plots.h"
 #include "svg_sphere.h"
@@ -270,7 +271,7 @@ int sphere_command(const std::vector<std::string>& args)
     });
   if(!s.report.empty() && !input_error) {
     json j;
-    j["status"] = SMP::discrete_lie_flow_error_name(status);
+    j["status"] = run_status(status, R);
     j["message"] = R.message;
     j["input"] = s.input;
     j["vertices"] = input.xyz.size();
@@ -333,7 +334,7 @@ int sphere_command(const std::vector<std::string>& args)
   if(s.verbosity != Verbosity::QUIET && ok) {
     std::cout << std::setprecision(8) << "dlf sphere " << s.input << ": " << input.xyz.size() << " vertices, "
               << input.faces.size() << " faces\n"
-              << "  status " << SMP::discrete_lie_flow_error_name(status) << ": " << R.message << "\n";
+              << "  status " << run_status(status, R) << ": " << R.message << "\n";
     if(ok) {
       std::cout << "  iterations " << R.iterations << " (" << SMP::discrete_lie_flow_stop_reason_name(R.stop_reason) << ")\n"
                 << "  d_area " << R.initial_metrics.d_area << " -> " << R.final_metrics.d_area << " (optimum 2)\n"
@@ -357,7 +358,7 @@ int sphere_command(const std::vector<std::string>& args)
   if(!ok)
     throw Cli_error(s.input + ": " + SMP::discrete_lie_flow_error_name(status) + ": " + R.message,
                     input_error ? EXIT_BAD_INPUT : EXIT_FLOW_ERROR);
-  return EXIT_OK;
+  return exit_code_of_ok_run(R, false);
 }
 
 } // namespace dlf_cli

@@ -46,9 +46,14 @@ struct Discrete_lie_flow_report
 {
   /// `OK`, or the error code that `parameterize()` returned.
   Error_code status = OK;
-  std::string message;          ///< one line naming the offending element on error
+  std::string message;          ///< "Success"; where a valid run stopped short of the targets; or the offending element on error
   /// Why the flow stopped.
   Discrete_lie_flow_stop_reason stop_reason = Discrete_lie_flow_stop_reason::NOT_RUN;
+  /// Whether the flow reached its targets (stop reason `CONVERGED`). A run
+  /// that returned `OK` without converging (iteration cap, plateau, stall,
+  /// interruption) still gives a valid, fold-free map, short of the targets:
+  /// its `message` says where it stopped.
+  bool converged() const { return stop_reason == Discrete_lie_flow_stop_reason::CONVERGED; }
   std::size_t vertices = 0;     ///< of the flowed component (the disk) or mesh (the sphere)
   std::size_t faces = 0;        ///< of the flowed component (the disk) or mesh (the sphere)
   /// The number of accepted iterations.

@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <iomanip>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -99,7 +100,14 @@ inline Error_code report_verdict(const Flow_outcome& out, Discrete_lie_flow_repo
     return report_failure(R, ERROR_FLOW_STALLED, out.solver_failed ? "the linear solver failed on the initial map"
                                                                    : "no step improves the initial map");
   R.status = OK;
-  R.message = "Success";
+  if(out.stop_reason == Discrete_lie_flow_stop_reason::CONVERGED) {
+    R.message = "Success";
+  } else {
+    std::ostringstream s;
+    s << std::setprecision(6) << "not converged: a valid, fold-free map, stopped (" << discrete_lie_flow_stop_reason_name(out.stop_reason)
+      << ") after " << out.iterations << " iterations at d_area " << out.final_d_area;
+    R.message = s.str();
+  }
   return OK;
 }
 

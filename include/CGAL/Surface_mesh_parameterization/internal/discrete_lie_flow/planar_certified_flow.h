@@ -235,13 +235,20 @@ private:
       for(int b : m_P.boundary) m_movable[std::size_t(b)] = 0;
     }
     const double mu = step_fraction(m_opt);
+    m_trial = m_uv; // the committed map, kept in case the sweeps' rounding misleads them
     for(std::size_t k = 0; k < m_settings.relaxation_sweeps; ++k) {
       const Relaxation_outcome r = relax_planar_vertices(m_P.faces, m_around, m_energy, mu, m_movable, m_uv, m_u);
       out.rejected_by_exact_check += r.refused_by_exact_check;
       if(r.moved == 0) break;
     }
+    const double E = m_E;
     signed_areas_2(m_uv, m_P.faces, m_u); // drop the sweeps' incremental rounding
     m_E = m_energy.value(m_u);
+    if(!std::isfinite(m_E)) { // a face the sweeps saw positive is not once recomputed: undo
+      m_uv.swap(m_trial);
+      signed_areas_2(m_uv, m_P.faces, m_u);
+      m_E = E;
+    }
   }
 
   const Disk_problem& m_P;

@@ -61,14 +61,22 @@ inline Relaxation_outcome relax_planar_vertices(const std::vector<Face>& faces, 
       const double rate = 0.5 * (d[0] * (r[1] - s[1]) + d[1] * (s[0] - r[0]));
       if(rate < 0) lambda_crit = (std::min)(lambda_crit, -u[f] / rate);
     }
-    const auto corner = [&](std::size_t f, int k, int j) -> const Vec2& { return uv[std::size_t(faces[f][(k + j) % 3])]; };
+    // The area in the face's own vertex order, as signed_areas_2() computes
+    // it: the rounding must not depend on which corner moved, or a face
+    // accepted here could come out non-positive when the areas are recomputed.
+    const auto moved_area = [&](std::size_t f, int k, const Vec2& x) {
+      const Vec2& a = k == 0 ? x : uv[std::size_t(faces[f][0])];
+      const Vec2& b = k == 1 ? x : uv[std::size_t(faces[f][1])];
+      const Vec2& c = k == 2 ? x : uv[std::size_t(faces[f][2])];
+      return signed_area_2(a, b, c);
+    };
     double dU = 0, dK = 0;
     u_new.resize(end - begin);
     const auto energy_at = [&](const Vec2& x) {
       dU = dK = 0;
       for(std::size_t i = begin; i < end; ++i) {
         const std::size_t f = around.of[i].first;
-        const double un = signed_area_2(x, corner(f, around.of[i].second, 1), corner(f, around.of[i].second, 2));
+        const double un = moved_area(f, around.of[i].second, x);
         if(!(un > 0)) return infinite_step();
         u_new[i - begin] = un;
         dU += un - u[f];

@@ -387,11 +387,16 @@ private:
     const std::vector<std::size_t> active =
       vertices_to_relax(m_P.faces, m_polish_energy, m_u, m_n, m_settings.relaxation_threshold);
     const double mu = step_fraction(m_opt);
+    m_trial = m_p; // the committed map, kept in case the sweeps' rounding misleads them
     for(std::size_t k = 0; k < m_settings.relaxation_sweeps && !active.empty(); ++k) {
       const Relaxation_outcome r = relax_sphere_vertices(m_P.faces, m_around, m_polish_energy, m_kappa, mu, active, m_p, m_u, m_w);
       out.rejected_by_exact_check += r.refused_by_exact_check;
     }
     m_E = evaluate(m_p, m_u, m_w); // drop the sweeps' incremental rounding
+    if(!std::isfinite(m_E)) { // a face the sweeps saw positive is not once recomputed: undo
+      m_p.swap(m_trial);
+      m_E = evaluate(m_p, m_u, m_w);
+    }
   }
 
   const Sphere_problem& m_P;
