@@ -23,6 +23,9 @@
 
 #include <Eigen/SparseLU>
 
+#include <dlfcn.h>
+#include <stdlib.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <array>
@@ -679,4 +682,49 @@ TEST(Features, RejectedByExactCheckIsCounted)
     if(mesh == &plain) EXPECT_EQ(r.rejected_by_exact_check, 0u);
     else EXPECT_GE(r.rejected_by_exact_check, 1u) << "the refusal of doc/robustness.md did not occur";
   }
+}
+
+// The BLAS threads during a flow: one by default on a small mesh, the given
+// number with solver_threads > 0, untouched with < 0 or when the environment
+// names a number; always restored after the run. And a run stopped by the
+// iteration cap is OK, not converged, and says where it stopped.
+TEST(Features, SolverThreadsAreSetForTheFlowAndRestored)
+{
+  typedef void (*Set)(int);
+  typedef int (*Get)();
+  const Set set = reinterpret_cast<Set>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+  const Get get = reinterpret_cast<Get>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+  if(set == nullptr || get == nullptr) GTEST_SKIP() << "no OpenBLAS in this process";
+  // CTest names the thread counts for every test; this one needs them unnamed.
+  for(const char* v : { "OPENBLAS_NUM_THREADS", "GOTO_NUM_THREADS", "OMP_NUM_THREADS", "OMP_THREAD_LIMIT" }) unsetenv(v);
+  set(3);
+  ASSERT_EQ(get(), 3) << "this OpenBLAS ignores openblas_set_num_threads()";
+  Loaded m;
+  load("lion-head", m);
+  UV_map uv = m.sm.add_property_map<SM_vertex, Point_2>("v:uv").first;
+  const auto threads_during = [&](int solver_threads, std::size_t cap = 500) {
+    SMP::Discrete_lie_flow_options o;
+    o.solver_threads = solver_threads;
+    o.max_iterations = cap;
+    int seen = -1;
+    o.callback = [&](const SMP::Discrete_lie_flow_iteration&) { seen = get(); return true; };
+    Dlf dlf(Dlf::Initial_parameterizer(), o);
+    EXPECT_EQ(SMP::parameterize(m.sm, dlf, m.bhd, uv), SMP::OK) << dlf.report().message;
+    EXPECT_EQ(get(), 3) << "not restored after solver_threads = " << solver_threads;
+    if(cap == 1) {
+      EXPECT_FALSE(dlf.report().converged());
+      EXPECT_EQ(dlf.report().stop_reason, Stop::ITERATION_CAP);
+      EXPECT_NE(dlf.report().message.find("not converged"), std::string::npos) << dlf.report().message;
+    } else {
+      EXPECT_TRUE(dlf.report().converged());
+      EXPECT_EQ(dlf.report().message, "Success");
+    }
+    return seen;
+  };
+  EXPECT_EQ(threads_during(0), 1);
+  EXPECT_EQ(threads_during(2), 2);
+  EXPECT_EQ(threads_during(-1), 3);
+  EXPECT_EQ(threads_during(0, 1), 1);
+  setenv("OPENBLAS_NUM_THREADS", "3", 1);
+  EXPECT_EQ(threads_during(0), 3);
 }

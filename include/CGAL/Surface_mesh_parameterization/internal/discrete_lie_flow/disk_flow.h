@@ -19,6 +19,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow_driver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/planar_certified_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/planar_paper_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/solver_threads.h>
 
 #include <algorithm>
 #include <chrono>
@@ -119,6 +120,7 @@ Error_code flow_disk(Disk_problem& P, std::vector<Vec2>& uv, const Discrete_lie_
                      EigenSolver& solver, Discrete_lie_flow_report& R)
 {
   typedef std::chrono::steady_clock Clock;
+  const Scoped_blas_threads threads(opt.solver_threads, uv.size());
   R.vertices = uv.size();
   R.faces = P.faces.size();
   // Some border parameterizers run clockwise: the flow then works on the

@@ -61,6 +61,7 @@ Error_code map_to_sphere(Sphere_problem& P, std::vector<Vec3>& points, const Dis
                          EigenSolver& solver, Discrete_lie_flow_report& R)
 {
   typedef std::chrono::steady_clock Clock;
+  const Scoped_blas_threads threads(opt.solver_threads, P.xyz.size());
   R.vertices = P.xyz.size();
   R.faces = P.faces.size();
   std::vector<Vec3> p;
