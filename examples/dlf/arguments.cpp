@@ -275,7 +275,8 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
     std::cout << "Usage: dlf disk INPUT [options]\n\n"
                  "Area-preserving parameterization of a disk-topology triangle mesh (any format CGAL\n"
                  "reads: OFF, OBJ, PLY, STL) by the Discrete Lie Flow; with --density, --roi or\n"
-                 "--roi-ball, measure-controlled: each face gets density times its share of the area.\n\n"
+                 "--roi-ball, measure-controlled: each face gets density times its share of the area;\n"
+                 "with --seam, of any mesh that its seams cut open into a disk.\n\n"
               << o << "\n" << disk_examples;
     return false;
   }

@@ -150,20 +150,20 @@ json make_report(const Disk_settings& s, const Indexed_mesh& input, const Seam_c
   return j;
 }
 
-void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh& mesh, const Seam_cut& cut, const Disk_run& run,
+void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh& input, const Seam_cut& cut, const Disk_run& run,
                    const Metrics* initial, const Metrics* final_metrics, const Density_setup& density,
                    const std::vector<std::string>& written,
                    const std::vector<std::pair<std::string, double> >& picture_timings)
 {
   const SMP::Discrete_lie_flow_report& R = run.report;
   out << std::setprecision(8);
-  out << "dlf disk " << s.input << ": " << mesh.xyz.size() << " vertices, " << mesh.faces.size() << " faces\n";
+  out << "dlf disk " << s.input << ": " << input.xyz.size() << " vertices, " << input.faces.size() << " faces\n";
   if(!s.seam.empty()) {
     out << "  seams " << s.seam << ": " << cut.seams.edges.size() << " edges";
     if(cut.seams.cones) out << " (shortest paths joining its " << cut.seams.cones << " vertices)";
-    out << ", cut into a disk of " << cut.mesh.xyz.size() << " vertices (one per seam side)\n";
+    out << ", cut open: " << cut.mesh.xyz.size() << " vertices (one per seam side)\n";
   }
-  out      << "  mode " << s.mode << ", init " << s.init << ", border " << used_border(run, s) << "\n"
+  out << "  mode " << s.mode << ", init " << s.init << ", border " << used_border(run, s) << "\n"
       << "  status " << SMP::discrete_lie_flow_error_name(run.status) << ": " << R.message << "\n"
       << "  iterations " << R.iterations << " (" << SMP::discrete_lie_flow_stop_reason_name(R.stop_reason) << ")\n";
   if(initial) {

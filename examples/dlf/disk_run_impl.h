@@ -76,9 +76,15 @@ Disk_run run_disk_on(Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_de
   typedef SMP::Discrete_lie_flow_parameterizer_3<Mesh, Recorder> Parameterizer;
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor Vertex;
 
+  // Every vertex gets its entry now: on a Seam_mesh these maps are hash
+  // maps, which a later insertion could rehash under a reference that a
+  // parameterizer holds.
   auto uvmap = get(CGAL::dynamic_vertex_property_t<Kernel::Point_2>(), mesh);
   auto vpmap = get(CGAL::dynamic_vertex_property_t<bool>(), mesh);
-  for(Vertex v : vertices(mesh)) put(vpmap, v, false);
+  for(Vertex v : vertices(mesh)) {
+    put(uvmap, v, Kernel::Point_2(0, 0));
+    put(vpmap, v, false);
+  }
 
   Disk_run run;
   auto initial = std::make_shared<std::vector<Vec2> >();

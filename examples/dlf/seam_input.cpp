@@ -192,7 +192,7 @@ Seam_cut cut_along_seams(const Indexed_mesh& mesh, const Seam_selection& seams)
   // them are one side: join them across every interior edge that is no seam.
   std::vector<std::size_t> parent(3 * F);
   std::iota(parent.begin(), parent.end(), std::size_t(0));
-  std::function<std::size_t(std::size_t)> find = [&](std::size_t i) {
+  auto find = [&parent](std::size_t i) {
     while(parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
   };
