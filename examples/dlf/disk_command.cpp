@@ -205,11 +205,12 @@ int disk_command(const std::vector<std::string>& args)
   if(!s.report.empty()) outputs.declare(s.report, "--report");
 
   const Indexed_mesh input = read_triangle_mesh(s.input);
-  // With seams, the flow maps the input cut open (one vertex per seam side);
-  // densities and regions are the input's (faces keep their order).
+  // With seams, the flow maps the input cut open (one vertex per seam side),
+  // which must pass the check of an uncut input; densities and regions are
+  // the input's (faces keep their order).
   Seam_cut cut;
   if(s.seam.empty()) check_disk_topology(input, s.input);
-  else cut = read_and_cut(input, s.input, s.seam);
+  else cut = read_and_cut(input, s.input, s.seam, check_disk_topology);
   const Indexed_mesh& mesh = s.seam.empty() ? input : cut.mesh;
   Density_setup density = make_density(input, s);
   s.options.face_density = density.face_density; // faces in input order, as Surface_mesh keeps them

@@ -231,11 +231,12 @@ Seam_cut cut_along_seams(const Indexed_mesh& mesh, const Seam_selection& seams)
   return cut;
 }
 
-Seam_cut read_and_cut(const Indexed_mesh& mesh, const std::string& mesh_path, const std::string& seam_path)
+Seam_cut read_and_cut(const Indexed_mesh& mesh, const std::string& mesh_path, const std::string& seam_path,
+                      const std::function<void(const Indexed_mesh&, const std::string&)>& check)
 {
   Seam_cut cut = cut_along_seams(mesh, read_seam_selection(seam_path, mesh));
   try {
-    check_disk_topology(cut.mesh, mesh_path);
+    check(cut.mesh, mesh_path);
   } catch(const Cli_error& e) {
     // "'MESH': not a disk..." becomes "'MESH' cut along ...: not a disk...".
     const std::size_t n = cut.seams.edges.size();

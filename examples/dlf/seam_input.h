@@ -11,6 +11,7 @@
 #include "mesh_input.h"
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -46,9 +47,11 @@ struct Seam_cut
 Seam_cut cut_along_seams(const Indexed_mesh& mesh, const Seam_selection& seams);
 
 /// Reads `seam_path`, cuts `mesh` (read from `mesh_path`) and checks the
-/// result with `check_disk_topology()`; throws `Cli_error` saying what the
-/// cut surface is otherwise (components, border loops, genus).
-Seam_cut read_and_cut(const Indexed_mesh& mesh, const std::string& mesh_path, const std::string& seam_path);
+/// cut surface with `check`, the check the caller applies to an uncut input
+/// (e.g. `check_disk_topology()`), whose `Cli_error` (what the surface is:
+/// components, border loops, genus) is rethrown naming the cut.
+Seam_cut read_and_cut(const Indexed_mesh& mesh, const std::string& mesh_path, const std::string& seam_path,
+                      const std::function<void(const Indexed_mesh&, const std::string&)>& check);
 
 } // namespace dlf_cli
 
