@@ -520,6 +520,130 @@ expect_error "sphere --literal-targets needs paper mode" 1 "--literal-targets ap
 expect_error "sphere --mode paper: a torus is refused" 1 "ERROR_NOT_GENUS_0" sphere "$MESHES/pipe.off" --mode paper
 check "no temporaries left (sphere paper)" no_temporaries
 
+# --- seams: CGAL's selection files (test/data), cut through Seam_mesh ----------
+SEAMDATA=$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/data
+# seam_obj_check OBJ INPUT_EDGES_PLUS_SEAMS_MINUS_FACES: every face is f v/vt,
+# the vt faces form a disk (V - E + F = 1) with one vt per Seam_mesh vertex
+# (a disk cut from the input has 1 + E + seams - F of them), and the seam
+# shows: some corner's vt is not its v.
+seam_obj_check() { python3 - "$@" <<'PY'
+import sys
+obj, expected = sys.argv[1], int(sys.argv[2])
+nvt = sum(1 for l in open(obj) if l.startswith("vt "))
+faces = [l.split()[1:] for l in open(obj) if l.startswith("f ")]
+assert all(len(f) == 3 and all(c.count("/") == 1 for c in f) for f in faces), "a face is not f v/vt v/vt v/vt"
+v = [[int(c.split("/")[0]) for c in f] for f in faces]
+t = [[int(c.split("/")[1]) for c in f] for f in faces]
+edges = {tuple(sorted((f[k], f[(k + 1) % 3]))) for f in t for k in range(3)}
+used = {i for f in t for i in f}
+chi = len(used) - len(edges) + len(faces)
+differ = sum(1 for a, b in zip(v, t) for x, y in zip(a, b) if x != y)
+print("  %d vt (%d used, %d expected), vt faces: Euler characteristic %d, %d corners with vt != v" % (nvt, len(used), expected, chi, differ))
+sys.exit(not (nvt == len(used) == expected and chi == 1 and differ > 0))
+PY
+}
+# input_e_minus_f MESH.off: edges minus faces of an OFF triangle mesh.
+input_e_minus_f() { python3 -c '
+import sys
+t = [l.split("#")[0].split() for l in open(sys.argv[1])]; t = [x for x in t if x]
+nv, nf = int(t[1][0]), int(t[1][1])
+f = [list(map(int, x[1:4])) for x in t[2 + nv:2 + nv + nf]]
+print(len({tuple(sorted((a[k], a[(k + 1) % 3]))) for a in f for k in range(3)}) - nf)' "$1"; }
+seam_case() { # seam_case NAME MESH SELECTION: a seamed run, its OBJ scored back
+  local name=$1 mesh=$MESHES/$2 sel=$SEAMDATA/$3
+  "$DLF" disk "$mesh" --seam "$sel" -o "seam_$name.obj" --report "seam_$name.json" --svg "seam_$name.svg" \
+    --texture "seam_${name}_tex.obj" --domain-mesh "seam_${name}_dom.obj" -q
+  check "--seam $name: exit 0" equals "$?" 0
+  check "--seam $name: status ok, converged" equals \
+    "$(json_get "seam_$name.json" "" status) $(json_get "seam_$name.json" "" stop_reason)" "ok converged"
+  "$DLF" score "seam_$name.obj" --report "seam_${name}_score.json" -q
+  check "--seam $name: dlf score of the OBJ alone exits 0, per-corner uv" equals \
+    "$? $(json_get "seam_${name}_score.json" "" uv)" "0 per_corner"
+  check "--seam $name: d_area <= 2.01 recomputed from the OBJ" number_is "$(json_get "seam_${name}_score.json" metrics d_area)" "<=" 2.01
+  check "--seam $name: the OBJ's d_area is the report's (1e-9 relative)" \
+    relatively_equal "$(json_get "seam_${name}_score.json" metrics d_area)" "$(json_get "seam_$name.json" final d_area)" 1e-9
+  check "--seam $name: 0 inverted faces in the OBJ" equals "$(json_get "seam_${name}_score.json" metrics inverted_faces)" 0
+  "$DLF" score "$mesh" "seam_$name.obj" --report "seam_${name}_score2.json" -q
+  check "--seam $name: dlf score MESH OBJ agrees" equals "$(json_get "seam_${name}_score2.json" metrics d_area)" \
+    "$(json_get "seam_${name}_score.json" metrics d_area)"
+  check "--seam $name: one v per input vertex" equals "$(count_lines "seam_$name.obj" 'v ')" "$(json_get "seam_$name.json" "" vertices)"
+  local seams; seams=$(json_get "seam_$name.json" seam edges)
+  check "--seam $name: one vt per Seam_mesh vertex, f v/vt, a disk" \
+    seam_obj_check "seam_$name.obj" "$((1 + $(input_e_minus_f "$mesh") + seams))"
+  check "--seam $name: the report's cut has as many vertices" equals "$(json_get "seam_$name.json" seam cut_vertices)" \
+    "$(count_lines "seam_$name.obj" 'vt ')"
+  check "--seam $name: textured OBJ and domain mesh have the same faces" bash -c \
+    "cmp -s <(grep '^f ' seam_$name.obj) <(grep '^f ' seam_${name}_tex.obj) && cmp -s <(grep '^f ' seam_$name.obj) <(grep '^f ' seam_${name}_dom.obj)"
+  check "--seam $name: the layout draws every face" equals "$(grep -c '<polygon' "seam_$name.svg")" \
+    "$(count_lines "seam_$name.obj" 'f ')"
+}
+seam_case blob blob.off blob.selection.txt
+# bear.selection.txt has no edges: its line 1 (3 cones) is joined by shortest paths
+seam_case bear bear.off bear.selection.txt
+check "--seam bear: the cones were joined" equals "$(json_get seam_bear.json seam joined_vertices)" 3
+"$DLF" disk "$MESHES/blob.off" --seam "$SEAMDATA/blob.selection.txt" --init lscm --mode paper --report seam_lscm.json -q
+check "--seam with --init lscm --mode paper: exit 0, status ok" equals "$? $(json_get seam_lscm.json "" status)" "0 ok"
+"$DLF" disk "$MESHES/blob.off" --seam "$SEAMDATA/blob.selection.txt" --border square --report seam_sq.json -q
+check "--seam with --border square: exit 0, status ok" equals "$? $(json_get seam_sq.json "" status)" "0 ok"
+# CGAL's lion seams leave 4 or 5 border loops (genus 0): not a disk
+for sel in lion lion2 lion3 lion4; do
+  loops=5; [ "$sel" = lion3 ] || [ "$sel" = lion4 ] && loops=4
+  expect_error "--seam $sel.selection.txt on lion.off: not a disk" 1 \
+    "lion.off' cut along the .* seam edges of '.*$sel.selection.txt': not a topological disk: found 1 connected component, $loops border loops, genus 0" \
+    disk "$MESHES/lion.off" --seam "$SEAMDATA/$sel.selection.txt"
+done
+cp "$MESHES/blob.off" blob.off
+printf '\n\n95 114 114 101 101 95\n' > ring.selection.txt
+expect_error "--seam: a seam loop cuts off a piece" 1 "found 2 connected components" disk blob.off --seam ring.selection.txt
+printf '\n\n0 99999\n' > s1.selection.txt
+expect_error "--seam: vertex out of range" 1 "line 3, pair 1 (0 99999): vertex 99999 does not exist (the mesh has 138 vertices)" disk blob.off --seam s1.selection.txt
+printf '\n\n95 114 0 1\n' > s2.selection.txt
+expect_error "--seam: not an edge" 1 "line 3, pair 2 (0 1): no edge of the mesh joins these vertices" disk blob.off --seam s2.selection.txt
+printf '\n\n95 114 0 x1\n' > s3.selection.txt
+expect_error "--seam: not a number" 1 "line 3: 'x1' is not a vertex index" disk blob.off --seam s3.selection.txt
+printf '\n\n95 114 0\n' > s4.selection.txt
+expect_error "--seam: odd count" 1 "line 3 has 3 indices, an odd number" disk blob.off --seam s4.selection.txt
+printf '\n\n1 5\n' > s5.selection.txt
+expect_error "--seam: border edge" 1 "pair 1 (1 5): a border edge" disk blob.off --seam s5.selection.txt
+printf '\n\n7 7\n' > s6.selection.txt
+expect_error "--seam: same vertex twice" 1 "pair 1 (7 7): not an edge" disk blob.off --seam s6.selection.txt
+printf '3\n\n\n' > s7.selection.txt
+expect_error "--seam: nothing to cut along" 1 "no seam edges (line 3 is empty)" disk blob.off --seam s7.selection.txt
+printf '3 -4\n\n\n' > s8.selection.txt
+expect_error "--seam: negative index" 1 "line 1: '-4' is not a vertex index" disk blob.off --seam s8.selection.txt
+expect_error "--seam: missing file" 1 "cannot open" disk blob.off --seam no_such.selection.txt
+# A mesh already cut open (duplicate positions along the seam, as exporters
+# write it) is a disk like any other: nothing merged, nothing refused.
+python3 - seam_blob.obj cut_open.off cut_open.obj <<'PY'
+import sys
+lines = open(sys.argv[1]).read().split("\n")
+v = [l.split()[1:4] for l in lines if l.startswith("v ")]
+f = [[c.split("/") for c in l.split()[1:]] for l in lines if l.startswith("f ")]
+xyz = {}
+for face in f:
+    for a, t in face: xyz[int(t) - 1] = v[int(a) - 1]
+with open(sys.argv[2], "w") as off:
+    off.write("OFF\n%d %d 0\n" % (len(xyz), len(f)))
+    for i in range(len(xyz)): off.write(" ".join(xyz[i]) + "\n")
+    for face in f: off.write("3 " + " ".join(str(int(t) - 1) for a, t in face) + "\n")
+with open(sys.argv[3], "w") as obj:
+    for i in range(len(xyz)): obj.write("v " + " ".join(xyz[i]) + "\n")
+    for face in f: obj.write("f " + " ".join(t for a, t in face) + "\n")
+PY
+check "cut-open mesh: dlf info finds the 6 duplicate positions on the border" bash -c \
+  "'$DLF' info cut_open.off | grep -q '6 duplicate positions (6 on the border: seam sides)'"
+check "cut-open mesh: dlf info says it fits dlf disk" equals "$(info_fits cut_open.off)" "dlf disk (a topological disk)"
+for ext in off obj; do
+  "$DLF" disk "cut_open.$ext" -o "cut_open_uv_$ext.obj" --report "cut_open_$ext.json" -q
+  check "cut-open mesh (.$ext): exit 0, status ok, converged, as many vertices as the seamed run's vt" equals \
+    "$? $(json_get "cut_open_$ext.json" "" status) $(json_get "cut_open_$ext.json" "" stop_reason) $(json_get "cut_open_$ext.json" "" vertices)" \
+    "0 ok converged $(count_lines seam_blob.obj 'vt ')"
+  "$DLF" score "cut_open.$ext" "cut_open_uv_$ext.obj" --report "cut_open_score_$ext.json" -q
+  check "cut-open mesh (.$ext): d_area <= 2.01" number_is "$(json_get "cut_open_score_$ext.json" metrics d_area)" "<=" 2.01
+  check "cut-open mesh (.$ext): 0 inverted faces" equals "$(json_get "cut_open_score_$ext.json" metrics inverted_faces)" 0
+done
+check "no temporaries left (seams)" no_temporaries
+
 echo
 if [ "$failures" -ne 0 ]; then
   echo "$failures of $checks checks FAILED"

@@ -155,10 +155,14 @@ const char* disk_examples =
   "  dlf disk face.off -o face_uv.obj --svg face.svg --texture face_tex.obj --plot-convergence conv.svg\n"
   "           --plot-histogram hist.svg\n"
   "      every picture: layout, textured mesh (face_tex.obj + .mtl + .png), convergence, histograms\n"
+  "  dlf disk blob.off -o blob_uv.obj --seam blob.selection.txt --texture blob_tex.obj\n"
+  "      cut along seams first (CGAL's Seam_mesh); the OBJs have one vt per seam side, f v/vt\n"
   "  dlf disk face.off -o face_uv.obj --density rho.txt --report rho.json\n"
   "      a density per face or per vertex (plain-text numbers), density-weighted metrics\n"
   "  dlf score face.off face_uv.obj\n"
   "      the distortion of a map written by 'dlf disk' (or any per-vertex uv OBJ)\n"
+  "  dlf score blob_uv.obj\n"
+  "      the same, the mesh read from the OBJ itself (e.g. a map with seams, per-corner uv)\n"
   "  dlf info face.off\n"
   "      topology and degeneracies of a mesh, and which command fits it\n"
   "\n"
@@ -179,7 +183,7 @@ void print_main_help(std::ostream& out)
          "\n"
          "Usage:\n"
          "  dlf disk INPUT [options]        map a disk-topology triangle mesh onto the plane\n"
-         "  dlf score MESH PARAM.obj        measure the distortion of an existing map\n"
+         "  dlf score [MESH] PARAM.obj      measure the distortion of an existing map\n"
          "  dlf sphere INPUT [options]      map a closed genus-0 mesh onto the unit sphere\n"
          "  dlf info MESH                   topology and degeneracy report; which command fits\n"
          "\n"
@@ -208,7 +212,12 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
   o.add_options()
     ("help,h", "show this help")
     ("output,o", po::value<std::string>(&s.output)->value_name("OUT.obj"),
-     "write the map: v = input positions, vt = uv (same vertex order), f a/a b/b c/c")
+     "write the map: v = input positions, vt = uv (same vertex order), f a/a b/b c/c; with --seam, "
+     "one vt per side of a seam and f a/p b/q c/r")
+    ("seam", po::value<std::string>(&s.seam)->value_name("SEAM.selection.txt"),
+     "cut the mesh open along seams and map the cut surface (through CGAL's Seam_mesh), which must be a "
+     "disk: a CGAL selection file whose line 3 lists the seam edges as pairs of vertex indices; if line 3 "
+     "is empty, the vertices of line 1 are joined by shortest edge paths")
     ("mode", po::value<std::string>(&s.mode)->value_name("M")->default_value("certified"),
      "certified: never folds the input triangles; paper: the paper's flow with edge flips")
     ("init", po::value<std::string>(&s.init)->value_name("I")->default_value("tutte"),
@@ -268,7 +277,8 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
     std::cout << "Usage: dlf disk INPUT [options]\n\n"
                  "Area-preserving parameterization of a disk-topology triangle mesh (any format CGAL\n"
                  "reads: OFF, OBJ, PLY, STL) by the Discrete Lie Flow; with --density, --roi or\n"
-                 "--roi-ball, measure-controlled: each face gets density times its share of the area.\n\n"
+                 "--roi-ball, measure-controlled: each face gets density times its share of the area;\n"
+                 "with --seam, of any mesh that its seams cut open into a disk.\n\n"
               << o << "\n" << disk_examples;
     return false;
   }
@@ -328,20 +338,22 @@ bool parse_score_arguments(const std::vector<std::string>& args, Score_settings&
     ("verbose,v", "same as the default");
   const po::variables_map vm = parse("score", args, o, "files");
   if(vm.count("help")) {
-    std::cout << "Usage: dlf score MESH PARAM.obj [--report R.json]\n\n"
+    std::cout << "Usage: dlf score [MESH] PARAM.obj [--report R.json]\n\n"
                  "Distortion metrics (d_area, arap, symmetric Dirichlet, log area ratio, inverted and\n"
                  "degenerate faces, smallest angle) of the map of MESH's triangles given by PARAM.obj:\n"
                  "its 'vt' lines, one per MESH vertex in order (as 'dlf disk' writes them), or, without\n"
-                 "'vt', the x and y of its 'v' lines when all z are 0.\n\n"
+                 "'vt', the x and y of its 'v' lines when all z are 0. When its faces 'f a/p b/q c/r'\n"
+                 "name other 'vt' than their 'v' (per-corner uv: a map with seams, as 'dlf disk --seam'\n"
+                 "writes it), its faces must be MESH's, and the metrics are those of MESH cut open, one\n"
+                 "vertex per 'vt'. Without MESH, the mesh is PARAM.obj's own 'v' and 'f'.\n\n"
               << o;
     return false;
   }
   const std::vector<std::string> files = positionals(vm, "files");
-  if(files.size() != 2)
-    throw Cli_error("expected MESH and PARAM.obj, got " + std::to_string(files.size()) + " file name" +
-                    (files.size() == 1 ? "" : "s") + " (see 'dlf score --help')");
+  if(files.empty() || files.size() > 2)
+    throw Cli_error("expected [MESH] PARAM.obj, got " + std::to_string(files.size()) + " file names (see 'dlf score --help')");
   s.mesh = files[0];
-  s.parameterization = files[1];
+  s.parameterization = files.back();
   set_verbosity(vm, s.verbosity);
   return true;
 }

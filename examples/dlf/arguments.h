@@ -37,6 +37,7 @@ const double density_tolerance = 5e-4;
 struct Disk_settings
 {
   std::string input;
+  std::string seam;                             ///< `--seam`: a CGAL selection file; empty: no cut
   std::string output, report, domain_mesh, svg; ///< empty: not written
   std::string convergence_svg, histogram_svg;   ///< `--plot-convergence`, `--plot-histogram`
   std::string texture_obj;                      ///< `--texture`: NAME.obj, with NAME.mtl and NAME.png

@@ -13,6 +13,7 @@
 #include "obj_io.h"
 #include "output_files.h"
 #include "progress.h"
+#include "seam_run.h"
 #include "verdict.h"
 
 #include <nlohmann/json.hpp>
@@ -98,16 +99,28 @@ json regions_json(const Density_setup& d, bool measured)
   return regions;
 }
 
-json make_report(const Disk_settings& s, const Indexed_mesh& mesh, const Disk_run& run, const Metrics* initial,
-                 const Metrics* final_metrics, const Density_setup& density, double picture_seconds)
+// With --seam: the seams and the cut surface that the flow mapped.
+json seam_json(const Disk_settings& s, const Seam_cut& cut)
+{
+  if(s.seam.empty()) return json(nullptr);
+  json j;
+  j["file"] = s.seam;
+  j["edges"] = cut.seams.edges.size();
+  j["joined_vertices"] = cut.seams.cones; // 0: the edges are the file's line 3
+  j["cut_vertices"] = cut.mesh.xyz.size();
+  return j;
+}
+
+json make_report(const Disk_settings& s, const Indexed_mesh& input, const Seam_cut& cut, const Disk_run& run,
+                 const Metrics* initial, const Metrics* final_metrics, const Density_setup& density, double picture_seconds)
 {
   const SMP::Discrete_lie_flow_report& R = run.report;
   json j;
   j["status"] = run_status(run.status, R);
   j["message"] = R.message;
   j["input"] = s.input;
-  j["vertices"] = mesh.xyz.size();
-  j["faces"] = mesh.faces.size();
+  j["vertices"] = input.xyz.size();
+  j["faces"] = input.faces.size();
   j["iterations"] = R.iterations;
   j["stop_reason"] = SMP::discrete_lie_flow_stop_reason_name(R.stop_reason);
   j["seconds"] = { { "initial", R.seconds_initial }, { "flow", R.seconds_flow }, { "total", run.seconds },
@@ -124,6 +137,7 @@ json make_report(const Disk_settings& s, const Indexed_mesh& mesh, const Disk_ru
   j["domain_d_area"] = R.final_d_area;
   j["final_residual"] = R.final_residual;
   j["rejected_by_exact_check"] = R.rejected_by_exact_check;
+  j["seam"] = seam_json(s, cut);
   j["options"] = { { "tolerance", s.options.tolerance }, { "share_tolerance", s.options.certified.share_tolerance },
                    { "max_iterations", s.options.max_iterations },
                    { "mu", s.options.mu > 0 ? json(s.options.mu) : json(nullptr) }, // null: the mode's default
@@ -137,15 +151,20 @@ json make_report(const Disk_settings& s, const Indexed_mesh& mesh, const Disk_ru
   return j;
 }
 
-void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh& mesh, const Disk_run& run,
+void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh& input, const Seam_cut& cut, const Disk_run& run,
                    const Metrics* initial, const Metrics* final_metrics, const Density_setup& density,
                    const std::vector<std::string>& written,
                    const std::vector<std::pair<std::string, double> >& picture_timings)
 {
   const SMP::Discrete_lie_flow_report& R = run.report;
   out << std::setprecision(8);
-  out << "dlf disk " << s.input << ": " << mesh.xyz.size() << " vertices, " << mesh.faces.size() << " faces\n"
-      << "  mode " << s.mode << ", init " << s.init << ", border " << used_border(run, s) << "\n"
+  out << "dlf disk " << s.input << ": " << input.xyz.size() << " vertices, " << input.faces.size() << " faces\n";
+  if(!s.seam.empty()) {
+    out << "  seams " << s.seam << ": " << cut.seams.edges.size() << " edges";
+    if(cut.seams.cones) out << " (shortest paths joining its " << cut.seams.cones << " vertices)";
+    out << ", cut open: " << cut.mesh.xyz.size() << " vertices (one per seam side)\n";
+  }
+  out << "  mode " << s.mode << ", init " << s.init << ", border " << used_border(run, s) << "\n"
       << "  status " << run_status(run.status, R) << ": " << R.message << "\n"
       << "  iterations " << R.iterations << " (" << SMP::discrete_lie_flow_stop_reason_name(R.stop_reason) << ")\n";
   if(initial) {
@@ -186,14 +205,20 @@ int disk_command(const std::vector<std::string>& args)
   declare_pictures(outputs, s);
   if(!s.report.empty()) outputs.declare(s.report, "--report");
 
-  const Indexed_mesh mesh = read_triangle_mesh(s.input);
-  check_disk_topology(mesh, s.input);
-  Density_setup density = make_density(mesh, s);
+  const Indexed_mesh input = read_triangle_mesh(s.input);
+  // With seams, the flow maps the input cut open (one vertex per seam side),
+  // which must pass the check of an uncut input; densities and regions are
+  // the input's (faces keep their order).
+  Seam_cut cut;
+  if(s.seam.empty()) check_disk_topology(input, s.input);
+  else cut = read_and_cut(input, s.input, s.seam, check_disk_topology);
+  const Indexed_mesh& mesh = s.seam.empty() ? input : cut.mesh;
+  Density_setup density = make_density(input, s);
   s.options.face_density = density.face_density; // faces in input order, as Surface_mesh keeps them
 
   Progress progress(s.verbosity, s.mode == "paper");
   s.options.callback = progress.callback();
-  const Disk_run run = run_disk(mesh, s);
+  const Disk_run run = s.seam.empty() ? run_disk(input, s) : run_seamed_disk(input, cut, s);
   progress.finish();
   const bool ok = run.status == SMP::OK;
 
@@ -215,30 +240,38 @@ int disk_command(const std::vector<std::string>& args)
   if(ok) {
     std::ostringstream comment;
     comment << std::setprecision(10) << "dlf disk " << s.input << ": mode " << s.mode << ", init " << s.init
-            << ", border " << used_border(run, s) << ", d_area " << final_metrics.d_area;
+            << ", border " << used_border(run, s) << (s.seam.empty() ? "" : ", seams " + s.seam) << ", d_area "
+            << final_metrics.d_area;
+    // v and f are the input's; with seams, vt are per side and f a/p b/q c/r.
     if(!s.output.empty())
-      outputs.write(s.output, [&](std::ostream& o) { write_uv_obj(o, mesh.xyz, run.final_uv, mesh.faces, comment.str()); });
+      outputs.write(s.output, [&](std::ostream& o) {
+        write_uv_obj(o, input.xyz, run.final_uv, input.faces, mesh.faces, comment.str());
+      });
     if(!s.domain_mesh.empty()) {
       // Certified mode keeps the input triangulation; its faces are written
       // in input order (the report lists them in the library's walk order).
       const std::vector<Triangle>& domain =
         s.mode == "paper" ? run.report.domain_faces : mesh.faces;
+      std::vector<Triangle> domain_positions = domain;
+      if(!s.seam.empty())
+        for(Triangle& t : domain_positions)
+          for(int& v : t) v = cut.input_vertex[std::size_t(v)];
       outputs.write(s.domain_mesh, [&](std::ostream& o) {
-        write_uv_obj(o, mesh.xyz, run.final_uv, domain, comment.str() + " (domain triangulation)");
+        write_uv_obj(o, input.xyz, run.final_uv, domain_positions, domain, comment.str() + " (domain triangulation)");
       });
     }
-    picture_timings = write_pictures(outputs, s, mesh, run, density, comment.str());
+    picture_timings = write_pictures(outputs, s, mesh, run, density, comment.str(), &input);
   }
   if(!s.report.empty()) {
     double picture_seconds = 0;
     for(const auto& p : picture_timings) picture_seconds += p.second;
-    const json report = make_report(s, mesh, run, initial_ptr, final_ptr, density, picture_seconds);
+    const json report = make_report(s, input, cut, run, initial_ptr, final_ptr, density, picture_seconds);
     outputs.write(s.report, [&](std::ostream& o) { o << report.dump(2) << '\n'; });
   }
   outputs.commit();
 
   if(s.verbosity != Verbosity::QUIET)
-    print_summary(std::cout, s, mesh, run, initial_ptr, final_ptr, density, outputs.committed(), picture_timings);
+    print_summary(std::cout, s, input, cut, run, initial_ptr, final_ptr, density, outputs.committed(), picture_timings);
   // A region that missed its share is not an error (the map is valid), but never silent.
   for(const Density_region& r : density.regions)
     if(ok && !(std::abs(r.relative_error()) <= region_share_tolerance))

@@ -77,7 +77,8 @@ void declare_pictures(Output_files& outputs, const Disk_settings& s)
 
 std::vector<std::pair<std::string, double> > write_pictures(Output_files& outputs, const Disk_settings& s,
                                                            const Indexed_mesh& mesh, const Disk_run& run,
-                                                           const Density_setup& density, const std::string& caption)
+                                                           const Density_setup& density, const std::string& caption,
+                                                           const Indexed_mesh* input)
 {
   std::vector<std::pair<std::string, double> > timings;
   auto timed = [&](const std::string& path, const std::function<void(std::ostream&)>& body) {
@@ -106,8 +107,9 @@ std::vector<std::pair<std::string, double> > write_pictures(Output_files& output
   if(!s.texture_obj.empty()) {
     const Texture_paths t = texture_paths(s.texture_obj);
     timed(t.obj, [&](std::ostream& o) {
-      write_textured_obj(o, mesh.xyz, unit_square_uv(run.final_uv), mesh.faces, file_name(t.mtl),
-                         caption + " (uv scaled into [0,1]^2)");
+      const Indexed_mesh& surface = input ? *input : mesh;
+      write_textured_obj(o, surface.xyz, unit_square_uv(run.final_uv), surface.faces, file_name(t.mtl),
+                         caption + " (uv scaled into [0,1]^2)", mesh.faces);
     });
     timed(t.mtl, [&](std::ostream& o) { write_checker_mtl(o, file_name(t.png)); });
     timed(t.png, [&](std::ostream& o) { write_checker_png(o, s.texture_size, 16); });

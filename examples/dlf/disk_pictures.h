@@ -23,11 +23,14 @@ namespace dlf_cli {
 /// Declares every picture file `settings` asks for (see `Output_files::declare()`).
 void declare_pictures(Output_files& outputs, const Disk_settings& settings);
 
-/// Writes them for a successful `run`; returns each file with the seconds
-/// its writing took.
+/// Writes them for a successful `run` of `mesh`; returns each file with the
+/// seconds its writing took. When `mesh` is the input cut along seams,
+/// `input` is the input: the textured OBJ's `v` and faces are its, and the
+/// faces of `mesh` index the `vt` (per-corner uv); the layout draws `mesh`.
 std::vector<std::pair<std::string, double> > write_pictures(Output_files& outputs, const Disk_settings& settings,
                                                            const Indexed_mesh& mesh, const Disk_run& run,
-                                                           const Density_setup& density, const std::string& caption);
+                                                           const Density_setup& density, const std::string& caption,
+                                                           const Indexed_mesh* input = nullptr);
 
 /// The edges between faces of different density, when the density takes at
 /// most `max_levels` values (a piecewise-constant density: its pieces'

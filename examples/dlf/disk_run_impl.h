@@ -12,6 +12,7 @@
 #include "surface_mesh.h"
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
+#include <CGAL/Dynamic_property_map.h>
 
 #include <Eigen/SparseLU>
 
@@ -39,8 +40,9 @@ public:
     : m_init(init), m_out(out)
   {}
 
-  template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>
-  CGAL::Surface_mesh_parameterization::Error_code parameterize(Surface_mesh& mesh, halfedge_descriptor bhd,
+  template <typename Mesh, typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>
+  CGAL::Surface_mesh_parameterization::Error_code parameterize(Mesh& mesh,
+                                                               typename boost::graph_traits<Mesh>::halfedge_descriptor bhd,
                                                                VertexUVmap uvmap, VertexIndexMap vimap,
                                                                VertexParameterizedMap vpmap)
   {
@@ -48,7 +50,7 @@ public:
     m_out->clear();
     if(code != CGAL::Surface_mesh_parameterization::OK) return code;
     m_out->resize(num_vertices(mesh));
-    for(vertex_descriptor v : vertices(mesh)) {
+    for(typename boost::graph_traits<Mesh>::vertex_descriptor v : vertices(mesh)) {
       const Kernel::Point_2 p = get(uvmap, v);
       (*m_out)[std::size_t(get(vimap, v))] = {{ p.x(), p.y() }};
     }
@@ -60,44 +62,60 @@ private:
   std::shared_ptr<std::vector<Vec2> > m_out;
 };
 
-/// Runs the flow with the initial parameterizer `init`, calling the
-/// parameterizer's own parameterize() (as SMP's free function does) with an
-/// index map that equals the input order, so that the report's
-/// `domain_faces` index input vertices.
-template <class Init>
-Disk_run run_disk_with(const Indexed_mesh& mesh, const Init& init, const Disk_settings& settings)
+/// Runs the flow with the initial parameterizer `init` on any face graph
+/// (`Surface_mesh`, `Seam_mesh`), calling the parameterizer's own
+/// parameterize() (as SMP's free function does) with `vimap`, which numbers
+/// the vertices 0..n-1: the run's maps and the report's `domain_faces` use
+/// those numbers.
+template <class Mesh, class Init, class VertexIndexMap>
+Disk_run run_disk_on(Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_descriptor bhd, VertexIndexMap vimap,
+                     const Init& init, const Disk_settings& settings)
 {
   namespace SMP = CGAL::Surface_mesh_parameterization;
   typedef Initial_map_recorder<Init> Recorder;
-  typedef SMP::Discrete_lie_flow_parameterizer_3<Surface_mesh, Recorder> Parameterizer;
+  typedef SMP::Discrete_lie_flow_parameterizer_3<Mesh, Recorder> Parameterizer;
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor Vertex;
 
-  Surface_mesh sm;
-  build_surface_mesh(mesh, sm);
-  halfedge_descriptor bhd = boost::graph_traits<Surface_mesh>::null_halfedge();
-  for(halfedge_descriptor h : halfedges(sm))
-    if(is_border(h, sm)) { bhd = h; break; } // the only border loop (checked)
-
-  auto uvmap = sm.add_property_map<vertex_descriptor, Kernel::Point_2>("v:dlf_uv").first;
-  auto vimap = sm.add_property_map<vertex_descriptor, int>("v:dlf_index", -1).first;
-  auto vpmap = sm.add_property_map<vertex_descriptor, bool>("v:dlf_parameterized", false).first;
-  for(vertex_descriptor v : vertices(sm)) put(vimap, v, int(v.idx()));
+  // Every vertex gets its entry now: on a Seam_mesh these maps are hash
+  // maps, which a later insertion could rehash under a reference that a
+  // parameterizer holds.
+  auto uvmap = get(CGAL::dynamic_vertex_property_t<Kernel::Point_2>(), mesh);
+  auto vpmap = get(CGAL::dynamic_vertex_property_t<bool>(), mesh);
+  for(Vertex v : vertices(mesh)) {
+    put(uvmap, v, Kernel::Point_2(0, 0));
+    put(vpmap, v, false);
+  }
 
   Disk_run run;
   auto initial = std::make_shared<std::vector<Vec2> >();
   Parameterizer parameterizer(Recorder(init, initial), settings.options);
   const auto t0 = std::chrono::steady_clock::now();
-  run.status = parameterizer.parameterize(sm, bhd, uvmap, vimap, vpmap);
+  run.status = parameterizer.parameterize(mesh, bhd, uvmap, vimap, vpmap);
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   run.report = parameterizer.report();
   run.initial_uv = *initial;
   if(run.status == SMP::OK) {
-    run.final_uv.resize(num_vertices(sm));
-    for(vertex_descriptor v : vertices(sm)) {
+    run.final_uv.resize(num_vertices(mesh));
+    for(Vertex v : vertices(mesh)) {
       const Kernel::Point_2 p = get(uvmap, v);
-      run.final_uv[v.idx()] = {{ p.x(), p.y() }};
+      run.final_uv[std::size_t(get(vimap, v))] = {{ p.x(), p.y() }};
     }
   }
   return run;
+}
+
+/// The same on the Surface_mesh of `mesh`, built in input order.
+template <class Init>
+Disk_run run_disk_with(const Indexed_mesh& mesh, const Init& init, const Disk_settings& settings)
+{
+  Surface_mesh sm;
+  build_surface_mesh(mesh, sm);
+  halfedge_descriptor bhd = boost::graph_traits<Surface_mesh>::null_halfedge();
+  for(halfedge_descriptor h : halfedges(sm))
+    if(is_border(h, sm)) { bhd = h; break; } // the only border loop (checked)
+  auto vimap = sm.add_property_map<vertex_descriptor, int>("v:dlf_index", -1).first;
+  for(vertex_descriptor v : vertices(sm)) put(vimap, v, int(v.idx()));
+  return run_disk_on(sm, bhd, vimap, init, settings);
 }
 
 } // namespace dlf_cli

@@ -40,7 +40,8 @@ const char* info_help =
   "Usage: dlf info MESH [--report R.json]\n"
   "\n"
   "Reads MESH (OFF, OBJ, PLY, STL, ...) as it is and reports its topology and\n"
-  "degeneracies: vertices (unreferenced, duplicate positions, non-finite), faces\n"
+  "degeneracies: vertices (unreferenced, duplicate positions, non-finite; duplicates\n"
+  "on the border are the two sides of a seam, fine for 'dlf disk'), faces\n"
   "(triangles or not), edges (border, non-manifold, inconsistently oriented),\n"
   "connected components, border loops, Euler characteristic and genus,\n"
   "non-manifold vertices, degenerate and zero-area faces, the smallest angle,\n"
@@ -68,6 +69,7 @@ struct Union_find
 struct Mesh_info
 {
   std::size_t vertices = 0, faces = 0, triangles = 0, unreferenced = 0, duplicate_positions = 0, non_finite = 0;
+  std::size_t duplicate_positions_on_border = 0; ///< both copies on the border: the sides of a seam, legal
   std::size_t edges = 0, border_edges = 0, non_manifold_edges = 0, misoriented_edges = 0;
   std::size_t components = 0, border_loops = 0, non_manifold_vertices = 0;
   std::size_t repeated_vertex_faces = 0, zero_area_faces = 0, faces_below_1_degree = 0;
@@ -125,14 +127,12 @@ Mesh_info analyse(const std::vector<Point_3>& points, const std::vector<Polygon>
     }
     first = false;
   }
-  {
-    std::vector<Point_3> sorted;
-    for(std::size_t i = 0; i < V; ++i)
-      if(used[i]) sorted.push_back(points[i]);
-    std::sort(sorted.begin(), sorted.end());
-    for(std::size_t k = 1; k < sorted.size(); ++k)
-      if(sorted[k] == sorted[k - 1]) ++m.duplicate_positions;
-  }
+  std::vector<std::pair<Point_3, std::size_t> > by_position;
+  for(std::size_t i = 0; i < V; ++i)
+    if(used[i]) by_position.emplace_back(points[i], i);
+  std::sort(by_position.begin(), by_position.end());
+  for(std::size_t k = 1; k < by_position.size(); ++k)
+    if(by_position[k].first == by_position[k - 1].first) ++m.duplicate_positions;
 
   // Directed edges of every polygon, as (min, max, forward, polygon, corner).
   struct Side { std::size_t a, b; bool forward; std::size_t face, corner_a, corner_b; };
@@ -194,6 +194,12 @@ Mesh_info analyse(const std::vector<Point_3>& points, const std::vector<Polygon>
   }
   for(std::size_t i = 0; i < V; ++i)
     if(on_border[i] && border.find(i) == i) ++m.border_loops;
+  // A mesh cut open along seams (as exporters write it) has its seam's
+  // vertices twice, both on the border: not a defect.
+  for(std::size_t k = 1; k < by_position.size(); ++k)
+    if(by_position[k].first == by_position[k - 1].first && on_border[by_position[k].second] &&
+       on_border[by_position[k - 1].second])
+      ++m.duplicate_positions_on_border;
   m.euler = long(V - m.unreferenced) - long(m.edges) + long(m.faces);
 
   // A vertex whose corners form more than one fan joins separate sheets.
@@ -247,6 +253,7 @@ json info_json(const std::string& path, const Mesh_info& m, const std::string& f
   j["vertices"] = m.vertices;
   j["unreferenced_vertices"] = m.unreferenced;
   j["duplicate_positions"] = m.duplicate_positions;
+  j["duplicate_positions_on_border"] = m.duplicate_positions_on_border;
   j["non_finite_vertices"] = m.non_finite;
   j["faces"] = m.faces;
   j["triangles"] = m.triangles;
@@ -277,7 +284,10 @@ void print_info(std::ostream& out, const std::string& path, const Mesh_info& m, 
                                     (m.hi[2] - m.lo[2]) * (m.hi[2] - m.lo[2]));
   out << std::setprecision(6) << "dlf info " << path << "\n"
       << "  vertices              " << m.vertices << " (" << m.unreferenced << " unreferenced, " << m.duplicate_positions
-      << " duplicate positions, " << m.non_finite << " non-finite)\n"
+      << " duplicate positions"
+      << (m.duplicate_positions_on_border ? " (" + std::to_string(m.duplicate_positions_on_border) + " on the border: seam sides)"
+                                          : std::string())
+      << ", " << m.non_finite << " non-finite)\n"
       << "  faces                 " << m.faces << " (" << m.triangles << " triangles)\n"
       << "  edges                 " << m.edges << " (" << m.border_edges << " border, " << m.non_manifold_edges
       << " non-manifold, " << m.misoriented_edges << " inconsistently oriented)\n"

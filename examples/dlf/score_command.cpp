@@ -23,19 +23,23 @@ int score_command(const std::vector<std::string>& args)
   if(!s.report.empty()) outputs.declare(s.report, "--report");
 
   const Indexed_mesh mesh = read_triangle_mesh(s.mesh);
-  const std::vector<Vec2> uv = read_uv_obj(s.parameterization, mesh.xyz.size());
-  const Metrics m = compute_metrics(mesh, uv);
+  // Per-corner uv (a map with seams) is measured on the mesh cut open.
+  const Obj_map map = read_map_obj(s.parameterization, mesh);
+  const Metrics m = compute_metrics(map.surface, map.uv);
 
   if(!s.report.empty()) {
-    const nlohmann::ordered_json report = { { "status", "ok" }, { "mesh", s.mesh }, { "parameterization", s.parameterization },
-                                    { "vertices", mesh.xyz.size() }, { "faces", mesh.faces.size() },
-                                    { "metrics", metrics_to_json(m) } };
+    nlohmann::ordered_json report = { { "status", "ok" }, { "mesh", s.mesh }, { "parameterization", s.parameterization },
+                                       { "vertices", mesh.xyz.size() }, { "faces", mesh.faces.size() },
+                                       { "uv", map.per_corner ? "per_corner" : "per_vertex" },
+                                       { "uv_vertices", map.uv.size() }, { "metrics", metrics_to_json(m) } };
     outputs.write(s.report, [&](std::ostream& o) { o << report.dump(2) << '\n'; });
   }
   outputs.commit();
   if(s.verbosity != Verbosity::QUIET) {
     std::cout << std::setprecision(10) << "dlf score " << s.mesh << " " << s.parameterization << ": "
-              << mesh.xyz.size() << " vertices, " << mesh.faces.size() << " faces\n";
+              << mesh.xyz.size() << " vertices, " << mesh.faces.size() << " faces";
+    if(map.per_corner) std::cout << ", per-corner uv (" << map.uv.size() << " vt: measured on the mesh cut open)";
+    std::cout << "\n";
     print_metrics(std::cout, m, "  ");
     for(const std::string& w : outputs.committed()) std::cout << "  wrote " << w << "\n";
   }

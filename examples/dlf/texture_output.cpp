@@ -3,6 +3,7 @@
 
 #include "texture_output.h"
 #include "cli_error.h"
+#include "obj_io.h"
 #include "text_buffer.h"
 
 #include <png.h>
@@ -69,28 +70,15 @@ std::vector<Vec2> unit_square_uv(const std::vector<Vec2>& uv)
 }
 
 void write_textured_obj(std::ostream& out, const std::vector<Vec3>& xyz, const std::vector<Vec2>& uv,
-                        const std::vector<Triangle>& faces, const std::string& mtl_file, const std::string& comment)
+                        const std::vector<Triangle>& faces, const std::string& mtl_file, const std::string& comment,
+                        const std::vector<Triangle>& uv_faces)
 {
   Text_buffer text(out);
   if(!comment.empty()) text << "# " << comment << "\n";
   text << "mtllib " << mtl_file << "\n";
-  for(const Vec3& p : xyz) {
-    text << "v ";
-    text.exact(p[0]) << ' ';
-    text.exact(p[1]) << ' ';
-    text.exact(p[2]) << '\n';
-  }
-  for(const Vec2& t : uv) {
-    text << "vt ";
-    text.exact(t[0]) << ' ';
-    text.exact(t[1]) << '\n';
-  }
+  write_obj_vertices(text, xyz, uv);
   text << "usemtl dlf_checker\n";
-  for(const Triangle& f : faces) {
-    text << 'f';
-    for(int k = 0; k < 3; ++k) text << ' ' << f[k] + 1 << '/' << f[k] + 1;
-    text << '\n';
-  }
+  write_obj_faces(text, faces, uv_faces.empty() ? faces : uv_faces);
 }
 
 void write_checker_mtl(std::ostream& out, const std::string& png_file)

@@ -29,9 +29,11 @@ Texture_paths texture_paths(const std::string& obj_path);
 std::vector<Vec2> unit_square_uv(const std::vector<Vec2>& uv);
 
 /// The OBJ: `v` = `xyz`, `vt` = `uv` (full precision), faces `f a/a b/b c/c`
-/// in the material of `mtl_file` (a name relative to the OBJ).
+/// in the material of `mtl_file` (a name relative to the OBJ); with
+/// `uv_faces` (per-corner uv, a seamed map), `f a/p b/q c/r`.
 void write_textured_obj(std::ostream& out, const std::vector<Vec3>& xyz, const std::vector<Vec2>& uv,
-                        const std::vector<Triangle>& faces, const std::string& mtl_file, const std::string& comment);
+                        const std::vector<Triangle>& faces, const std::string& mtl_file, const std::string& comment,
+                        const std::vector<Triangle>& uv_faces = std::vector<Triangle>());
 
 void write_checker_mtl(std::ostream& out, const std::string& png_file);
 
