@@ -34,6 +34,7 @@
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_authalic_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Iterative_authalic_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Square_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Containers_filler.h>
@@ -113,12 +114,12 @@ struct Silence_cout
 enum Method
 {
   DLF_CERTIFIED_CIRCLE, DLF_CERTIFIED_SQUARE, DLF_PAPER_CIRCLE, DLF_PAPER_SQUARE,
-  ITER_AUTHALIC_CIRCLE, DISCRETE_AUTHALIC_CIRCLE, ARAP, MVC_CIRCLE, METHOD_COUNT
+  ITER_AUTHALIC_CIRCLE, DISCRETE_AUTHALIC_CIRCLE, ARAP, MVC_CIRCLE, LSCM, METHOD_COUNT
 };
 static const char* method_name(int m)
 {
   static const char* names[] = { "dlf_certified_circle", "dlf_certified_square", "dlf_paper_circle", "dlf_paper_square",
-                                 "iter_authalic_circle", "discrete_authalic_circle", "arap", "mvc_circle" };
+                                 "iter_authalic_circle", "discrete_authalic_circle", "arap", "mvc_circle", "lscm" };
   return names[m];
 }
 static bool is_dlf(int m) { return m <= DLF_PAPER_SQUARE; }
@@ -259,6 +260,16 @@ static Run run_once(int method, const Mesh_case& c, const SMP::Discrete_lie_flow
   }
   case ARAP: {
     SMP::ARAP_parameterizer_3<SM> p; // λ = 1000, MVC + circle initialisation, free border
+    Silence_cout quiet;
+    c0 = cpu_now();
+    t0 = Clock::now();
+    err = SMP::parameterize(m, p, c.bhd, uvmap);
+    r.seconds = seconds_since(t0);
+    r.cpu_seconds = cpu_now() - c0;
+    break;
+  }
+  case LSCM: {
+    SMP::LSCM_parameterizer_3<SM> p; // free border, two vertices pinned (CGAL's default)
     Silence_cout quiet;
     c0 = cpu_now();
     t0 = Clock::now();
