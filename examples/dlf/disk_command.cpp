@@ -97,8 +97,8 @@ json regions_json(const Density_setup& d, bool measured)
   return regions;
 }
 
-json make_report(const Disk_settings& s, const Indexed_mesh& mesh, const Disk_run& run, const Metrics* initial,
-                 const Metrics* final_metrics, const Density_setup& density, double picture_seconds)
+json make_report(const Disk_settings& s, const Indexed_mesh& mesh, const std::vector<Border_loop>& loops, const Disk_run& run,
+                 const Metrics* initial, const Metrics* final_metrics, const Density_setup& density, double picture_seconds)
 {
   const SMP::Discrete_lie_flow_report& R = run.report;
   json j;
@@ -116,6 +116,10 @@ json make_report(const Disk_settings& s, const Indexed_mesh& mesh, const Disk_ru
   j["mode"] = s.mode;
   j["init"] = s.init;
   j["border"] = used_border(run, s);
+  j["border_loops"] = loops.size();
+  j["outer_loop"] = { { "index", s.outer_loop }, { "length", loops[std::size_t(s.outer_loop)].length },
+                      { "vertices", loops[std::size_t(s.outer_loop)].vertices.size() } };
+  j["holes"] = loops.size() - 1; // they float (the library fills them for the flow)
   j["caller_inverted_faces"] = R.caller_inverted_faces;
   j["flowing_inverted_faces"] = R.flowing_inverted_faces;
   j["flips"] = R.flips;
@@ -136,7 +140,8 @@ json make_report(const Disk_settings& s, const Indexed_mesh& mesh, const Disk_ru
   return j;
 }
 
-void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh& mesh, const Disk_run& run,
+void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh& mesh,
+                   const std::vector<Border_loop>& loops, const Disk_run& run,
                    const Metrics* initial, const Metrics* final_metrics, const Density_setup& density,
                    const std::vector<std::string>& written,
                    const std::vector<std::pair<std::string, double> >& picture_timings)
@@ -145,7 +150,16 @@ void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh
   out << std::setprecision(8);
   out << "dlf disk " << s.input << ": " << mesh.xyz.size() << " vertices, " << mesh.faces.size() << " faces\n"
       << "  mode " << s.mode << ", init " << s.init << ", border " << used_border(run, s) << "\n"
-      << "  status " << SMP::discrete_lie_flow_error_name(run.status) << ": " << R.message << "\n"
+      << "  status " << SMP::discrete_lie_flow_error_name(run.status) << ": " << R.message << "\n";
+  if(loops.size() > 1) {
+    const Border_loop& outer = loops[std::size_t(s.outer_loop)];
+    out << "  border loops " << loops.size() << ": loop " << s.outer_loop << " is outer (length " << outer.length << ", "
+        << outer.vertices.size() << " vertices; --outer-loop K picks another, as 'dlf info' lists them), "
+        << loops.size() - 1 << (loops.size() == 2 ? " hole floats" : " holes float") << "\n"
+        << "  initial map: " << s.init << " places the outer loop; the start is Tutte's embedding of the disk with "
+           "its holes filled\n";
+  }
+  out
       << "  iterations " << R.iterations << " (" << SMP::discrete_lie_flow_stop_reason_name(R.stop_reason) << ")\n";
   if(initial) {
     out << "  d_area " << initial->d_area;
@@ -186,7 +200,12 @@ int disk_command(const std::vector<std::string>& args)
   if(!s.report.empty()) outputs.declare(s.report, "--report");
 
   const Indexed_mesh mesh = read_triangle_mesh(s.input);
-  check_disk_topology(mesh, s.input);
+  const std::vector<Border_loop> loops = check_disk_topology(mesh, s.input);
+  if(std::size_t(s.outer_loop) >= loops.size())
+    throw Cli_error("--outer-loop " + std::to_string(s.outer_loop) + ": " + s.input + " has " +
+                    std::to_string(loops.size()) + " border loop" + (loops.size() == 1 ? "" : "s") + " (0 to " +
+                    std::to_string(loops.size() - 1) + ", longest first, as 'dlf info' lists them)");
+  s.outer_vertex = loops[std::size_t(s.outer_loop)].vertices.front();
   Density_setup density = make_density(mesh, s);
   s.options.face_density = density.face_density; // faces in input order, as Surface_mesh keeps them
 
@@ -231,13 +250,13 @@ int disk_command(const std::vector<std::string>& args)
   if(!s.report.empty()) {
     double picture_seconds = 0;
     for(const auto& p : picture_timings) picture_seconds += p.second;
-    const json report = make_report(s, mesh, run, initial_ptr, final_ptr, density, picture_seconds);
+    const json report = make_report(s, mesh, loops, run, initial_ptr, final_ptr, density, picture_seconds);
     outputs.write(s.report, [&](std::ostream& o) { o << report.dump(2) << '\n'; });
   }
   outputs.commit();
 
   if(s.verbosity != Verbosity::QUIET)
-    print_summary(std::cout, s, mesh, run, initial_ptr, final_ptr, density, outputs.committed(), picture_timings);
+    print_summary(std::cout, s, mesh, loops, run, initial_ptr, final_ptr, density, outputs.committed(), picture_timings);
   // A region that missed its share is not an error (the map is valid), but never silent.
   for(const Density_region& r : density.regions)
     if(ok && !(std::abs(r.relative_error()) <= region_share_tolerance))

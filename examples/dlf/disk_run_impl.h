@@ -75,7 +75,10 @@ Disk_run run_disk_with(const Indexed_mesh& mesh, const Init& init, const Disk_se
   build_surface_mesh(mesh, sm);
   halfedge_descriptor bhd = boost::graph_traits<Surface_mesh>::null_halfedge();
   for(halfedge_descriptor h : halfedges(sm))
-    if(is_border(h, sm)) { bhd = h; break; } // the only border loop (checked)
+    if(is_border(h, sm) && (settings.outer_vertex < 0 || int(target(h, sm).idx()) == settings.outer_vertex)) {
+      bhd = h; // on the outer loop (checked: a disk, or a disk with holes)
+      break;
+    }
 
   auto uvmap = sm.add_property_map<vertex_descriptor, Kernel::Point_2>("v:dlf_uv").first;
   auto vimap = sm.add_property_map<vertex_descriptor, int>("v:dlf_index", -1).first;
