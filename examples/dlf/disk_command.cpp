@@ -206,6 +206,9 @@ int disk_command(const std::vector<std::string>& args)
                     std::to_string(loops.size()) + " border loop" + (loops.size() == 1 ? "" : "s") + " (0 to " +
                     std::to_string(loops.size() - 1) + ", longest first, as 'dlf info' lists them)");
   s.outer_vertex = loops[std::size_t(s.outer_loop)].vertices.front();
+  if(loops.size() > 1 && s.mode == "paper")
+    throw Cli_error("--mode paper takes disks only: " + s.input + " has " + std::to_string(loops.size() - 1) +
+                    " holes (the certified mode, the default, fills them for the flow)");
   Density_setup density = make_density(mesh, s);
   s.options.face_density = density.face_density; // faces in input order, as Surface_mesh keeps them
 
