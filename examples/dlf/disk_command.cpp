@@ -205,10 +205,13 @@ int disk_command(const std::vector<std::string>& args)
     throw Cli_error("--outer-loop " + std::to_string(s.outer_loop) + ": " + s.input + " has " +
                     std::to_string(loops.size()) + " border loop" + (loops.size() == 1 ? "" : "s") + " (0 to " +
                     std::to_string(loops.size() - 1) + ", longest first, as 'dlf info' lists them)");
-  s.outer_vertex = loops[std::size_t(s.outer_loop)].vertices.front();
+  if(loops.size() > 1) {
+    s.on_outer_loop.assign(mesh.xyz.size(), 0);
+    for(int v : loops[std::size_t(s.outer_loop)].vertices) s.on_outer_loop[std::size_t(v)] = 1;
+  }
   if(loops.size() > 1 && s.mode == "paper")
     throw Cli_error("--mode paper takes disks only: " + s.input + " has " + std::to_string(loops.size() - 1) +
-                    " holes (the certified mode, the default, fills them for the flow)");
+                    (loops.size() == 2 ? " hole" : " holes") + " (the certified mode, the default, fills them for the flow)");
   Density_setup density = make_density(mesh, s);
   s.options.face_density = density.face_density; // faces in input order, as Surface_mesh keeps them
 

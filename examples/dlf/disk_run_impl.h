@@ -75,8 +75,8 @@ Disk_run run_disk_with(const Indexed_mesh& mesh, const Init& init, const Disk_se
   build_surface_mesh(mesh, sm);
   halfedge_descriptor bhd = boost::graph_traits<Surface_mesh>::null_halfedge();
   for(halfedge_descriptor h : halfedges(sm))
-    if(is_border(h, sm) && (settings.outer_vertex < 0 || int(target(h, sm).idx()) == settings.outer_vertex)) {
-      bhd = h; // on the outer loop (checked: a disk, or a disk with holes)
+    if(is_border(h, sm) && (settings.on_outer_loop.empty() || settings.on_outer_loop[target(h, sm).idx()])) {
+      bhd = h; // the first on the outer loop (checked: a disk, or a disk with holes)
       break;
     }
 

@@ -102,7 +102,8 @@ struct Discrete_lie_flow_report
   /// The disk: the border loops other than the given one (holes), filled for
   /// the flow and left free; 0 for a disk. With holes the initial map is the
   /// library's own (Tutte's embedding of the filled disk inside the initial
-  /// parameterizer's outer loop), and `history` follows the filled disk.
+  /// parameterizer's outer loop), and `history` and `final_residual` follow
+  /// the filled disk.
   std::size_t holes = 0;
   /// The sphere: the face of the initial map's north cap (index in face order).
   int puncture_face = -1;

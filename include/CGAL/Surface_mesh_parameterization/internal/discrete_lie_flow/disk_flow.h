@@ -120,7 +120,7 @@ Error_code flow_disk(Disk_problem& P, std::vector<Vec2>& uv, const Discrete_lie_
   R.holes = P.holes;
   if(holes && opt.mode == Discrete_lie_flow_mode::PAPER)
     return report_failure(R, ERROR_NO_TOPOLOGICAL_DISC, "the paper mode takes disks only (the mesh has " +
-                          std::to_string(P.holes) + " holes); the certified mode fills them");
+                          std::to_string(P.holes) + (P.holes == 1 ? " hole" : " holes") + "); the certified mode fills them");
   // Some border parameterizers run clockwise: the flow then works on the
   // faces with their index order reversed.
   Orientation_count oc = count_orientations_2(uv, P.faces);
