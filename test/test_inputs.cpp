@@ -4,7 +4,9 @@
 // The Discrete Lie Flow parameterizer as a CGAL plug-in: Surface_mesh,
 // Polyhedron_3 and Seam_mesh through `parameterize()` (with a temporary and a
 // named object), one negative test per error code (with the element named in
-// the message), and the options that end a run (cap, callback, stall).
+// the message), meshes with holes (converged, fold-free, injective, the
+// report about the caller's mesh), and the options that end a run (cap,
+// callback, stall).
 
 #include <gtest/gtest.h>
 
