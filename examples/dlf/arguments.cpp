@@ -149,7 +149,7 @@ const char* disk_examples =
   "  dlf disk face.off -o face_uv.obj --init lscm\n"
   "      free border: the border keeps the shape of the LSCM map\n"
   "  dlf disk lion.off -o lion_uv.obj --outer-loop 1\n"
-  "      a mesh with holes: its second-longest loop goes to the circle, the other holes float\n"
+  "      a mesh with holes: its second-longest loop goes to the circle, the other loops float\n"
   "  dlf disk face.off --mode paper --history --report paper.json --domain-mesh flipped.obj\n"
   "      the paper's algorithm (edge flips), its per-iteration history and flipped triangulation\n"
   "  dlf disk face.off -o face_uv.obj --roi-ball 0.1 -0.2 0.5 0.3 --factor 4 --band 0.1 --svg roi.svg\n"
