@@ -4,9 +4,10 @@
 # refactoring, a faster kernel) can prove it did.
 #
 # Rows: every disk mesh of the data set with at least 100 faces (both modes,
-# circle and square border) and every closed genus-0 mesh with at least 200
-# faces (both spherical modes), run by the default `dlf` command with one
-# thread (the results depend on the BLAS thread count at rounding level).
+# circle and square border; a mesh with holes: certified only) and every
+# closed genus-0 mesh with at least 200 faces (both spherical modes), run by
+# the default `dlf` command with one thread (the results depend on the BLAS
+# thread count at rounding level).
 # Columns: status, stop reason, iterations, the flow's final D_area on its
 # domain triangulation, and D_area on the caller's triangles.
 #
@@ -49,9 +50,11 @@ start=$(date +%s)
 for mesh in "$MESHES"/*.off; do
   name="$(basename "$mesh")"
   "$DLF" info "$mesh" -q --report "$tmp/info.json" || continue
-  read -r fits faces < <(python3 -c 'import json,sys; j=json.load(open(sys.argv[1])); print(j["fits"].replace(" ", "_"), j["faces"])' "$tmp/info.json")
+  read -r fits faces loops < <(python3 -c 'import json,sys; j=json.load(open(sys.argv[1])); print(j["fits"].replace(" ", "_"), j["faces"], j["border_loops"])' "$tmp/info.json")
   if [[ "$fits" == dlf_disk && "$faces" -ge 100 ]]; then
-    for mode in certified paper; do
+    modes="certified paper"
+    [[ "$loops" -gt 1 ]] && modes=certified # holes: the paper mode takes disks only
+    for mode in $modes; do
       for border in circle square; do
         rm -f "$tmp/r.json"
         "$DLF" disk "$mesh" --mode "$mode" --border "$border" -q --report "$tmp/r.json" >/dev/null 2>&1 || true

@@ -390,6 +390,30 @@ check "info: report says fits none" equals "$(json_get bowtie.json "" fits)" non
 check "info: lion-head's numbers" equals "$(json_get lion_info.json "" faces) $(json_get lion_info.json "" border_loops) $(json_get lion_info.json "" genus)" "16674 1 0"
 check "info --help" bash -c "'$DLF' info --help | grep -q 'Usage: dlf info'"
 
+# --- meshes with holes (genus 0, several border loops) --------------------------
+# The longest loop is the outer one by default, the others float; the library
+# fills them for the flow, so the map is injective as well as fold-free.
+"$DLF" info "$MESHES/head.off" --report head_info.json > head_info.out
+check "info: head has 3 loops, fits dlf disk with 2 holes" bash -c \
+  "[ '$(json_get head_info.json "" border_loops) $(json_get head_info.json "" fits)' = '3 dlf disk' ] && grep -q 'a disk with 2 holes' head_info.out"
+check "info: loops listed longest first" bash -c \
+  "grep -q '^    loop 0  *length 25.10.*, 38 vertices (the outer loop' head_info.out && grep -q '^    loop 2  *length 4.22.*, 10 vertices' head_info.out"
+for mesh in pig holes; do
+  "$DLF" disk "$MESHES/$mesh.off" -o "$mesh.obj" --report "$mesh.json" > "$mesh.out"
+  check "$mesh (holes): exit 0, ok, converged" equals "$? $(json_get "$mesh.json" "" status) $(json_get "$mesh.json" "" stop_reason)" "0 ok converged"
+  check "$mesh (holes): 6 holes float, loop 0 outer" equals "$(json_get "$mesh.json" "" holes) $(json_get "$mesh.json" outer_loop index)" "6 0"
+  check "$mesh (holes): the summary says which loop is outer and what the start was" bash -c \
+    "grep -q 'loop 0 is outer.*6 holes float' $mesh.out && grep -q 'start is Tutte' $mesh.out"
+  "$DLF" score "$MESHES/$mesh.off" "$mesh.obj" --report "${mesh}_score.json" -q
+  check "$mesh (holes): rescored d_area <= 2.01" number_is "$(json_get "${mesh}_score.json" metrics d_area)" "<=" 2.01
+  check "$mesh (holes): rescored, 0 inverted faces" equals "$(json_get "${mesh}_score.json" metrics inverted_faces)" 0
+  check "$mesh (holes): at most 200 iterations" number_is "$(json_get "$mesh.json" "" iterations)" "<=" 200
+done
+"$DLF" disk "$MESHES/head.off" --outer-loop 1 --max-iterations 20 --report head1.json -q
+check "head --outer-loop 1: exit 0, an eye outer (10 vertices), 2 holes" equals \
+  "$? $(json_get head1.json outer_loop index) $(json_get head1.json outer_loop vertices) $(json_get head1.json "" holes)" "0 1 10 2"
+check "head --outer-loop 1: 0 inverted faces" equals "$(json_get head1.json final inverted_faces)" 0
+
 # --- error paths: non-zero exit, one line on stderr, no output file -----------
 echo "this is not a mesh" > garbage.off
 head -c 2000 /dev/zero | tr '\0' 'x' > garbage.obj
@@ -422,6 +446,10 @@ expect_error "garbage OBJ" 1 "cannot read" disk garbage.obj
 expect_error "closed mesh (not a disk)" 1 "0 border loops" disk "$MESHES/sphere.off"
 expect_error "torus (not a disk)" 1 "genus 1" disk "$MESHES/pipe.off"
 expect_error "non-triangle faces" 1 "not triangles" disk "$MESHES/quad.off"
+expect_error "genus 3 with holes" 1 "106 border loops, genus 3" disk "$MESHES/elephant-with-holes.off"
+expect_error "--outer-loop out of range" 1 "has 3 border loops (0 to 2" disk "$MESHES/head.off" --outer-loop 3
+expect_error "--outer-loop negative" 1 "--outer-loop must be >= 0" disk "$MESHES/head.off" --outer-loop -1
+expect_error "paper mode refuses holes" 1 "--mode paper takes disks only: .* has 6 holes" disk "$MESHES/pig.off" --mode paper
 expect_error "unknown option" 1 "frobnicate" disk input.off --frobnicate
 expect_error "bad --mode value" 1 "'fast' for --mode" disk input.off --mode fast
 expect_error "bad --init value" 1 "'magic' for --init" disk input.off --init magic

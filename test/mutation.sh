@@ -39,6 +39,10 @@ MUTATIONS=(
   "share error relative to the larger side (too lenient)|$DLF/density_levels.h|/ (std::min)(p, 1 - p);|/ (std::max)(p, 1 - p);"
   "circle fitted 0.01% too large (border off the circle)|$DLF/boundary_curve.h|radius = r / double(pts.size());|radius = 1.0001 * r / double(pts.size());"
   "inverted faces never counted in the metrics|$DLF/distortion.h|if(inverted) ++m.inverted_faces;|if(false) ++m.inverted_faces;"
+  "holes: the fill's targets almost nil (the holes shrink to nothing)|$DLF/disk_holes.h|P.target.push_back(rho * (std::max)(area, hole_fill_floor * area_g));|P.target.push_back(rho * 1e-6 * area_g);"
+  "holes: the fill oriented against the caller's faces|$DLF/disk_holes.h|P.faces.push_back(Face{{ a, b, c }});|P.faces.push_back(Face{{ b, a, c }});"
+  "holes: the caller's start kept (no Tutte embedding of the filled disk)|$INC/Discrete_lie_flow_parameterizer_3.h|if(!D::filled_disk_tutte<|if(false && !D::filled_disk_tutte<"
+  "holes: the report counts the fill's faces|$DLF/disk_flow.h|R.faces = P.caller_faces();|R.faces = P.faces.size();"
 )
 
 # The fast subset: unit tests of the numerics, the area and share
@@ -46,7 +50,7 @@ MUTATIONS=(
 TESTS=(
   'Critical_step.*' 'Certification.*' 'Boundary_curve.*' 'Distortion.*' 'Errors.*' 'Run_flow.*'
   'DensityRegions.*' 'DensityExactness.*'
-  'Features.*' 'Area_elements.*'
+  'Features.*' 'Area_elements.*' 'Holes.*'
   'DataSet/Certified_disk.Circle/mushroom' 'DataSet/Certified_disk.Square/nefertiti'
   'DataSet/Free_border.Lscm/mushroom' 'DataSet/Paper_disk.Circle/mushroom'
 )

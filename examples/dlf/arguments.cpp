@@ -148,6 +148,8 @@ const char* disk_examples =
   "      onto a square, with a picture of the area ratios and a JSON report\n"
   "  dlf disk face.off -o face_uv.obj --init lscm\n"
   "      free border: the border keeps the shape of the LSCM map\n"
+  "  dlf disk lion.off -o lion_uv.obj --outer-loop 1\n"
+  "      a mesh with holes: its second-longest loop goes to the circle, the other loops float\n"
   "  dlf disk face.off --mode paper --history --report paper.json --domain-mesh flipped.obj\n"
   "      the paper's algorithm (edge flips), its per-iteration history and flipped triangulation\n"
   "  dlf disk face.off -o face_uv.obj --roi-ball 0.1 -0.2 0.5 0.3 --factor 4 --band 0.1 --svg roi.svg\n"
@@ -226,6 +228,9 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
     ("border", po::value<std::string>(&s.border)->value_name("B"),
      "circle or square (tutte, mvc, dcp; default circle), or free: the border slides along the initial "
      "map's border (the only choice, and the default, for lscm and arap)")
+    ("outer-loop", po::value<int>(&s.outer_loop)->value_name("K")->default_value(0),
+     "a mesh with holes (genus 0, several border loops): the loop that goes to the border, counted from 0 "
+     "in the order of 'dlf info' (longest first, by 3D length); the others are holes and float")
     ("report", po::value<std::string>(&s.report)->value_name("R.json"), "write a JSON report (status, metrics, timings)")
     ("domain-mesh", po::value<std::string>(&s.domain_mesh)->value_name("DOMAIN.obj"),
      "write the final domain triangulation (differs from the input's in paper mode)")
@@ -298,6 +303,7 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
   if(!(tolerance >= 0) || !std::isfinite(tolerance)) throw Cli_error("--tolerance must be a number >= 0");
   if(vm.count("mu") && !(mu > 0 && mu < 1)) throw Cli_error("--mu must be in (0, 1)");
   if(max_iterations < 0) throw Cli_error("--max-iterations must be >= 0");
+  if(s.outer_loop < 0) throw Cli_error("--outer-loop must be >= 0");
   // Below 16 pixels a side the 16 squares vanish; above 16384 the PNG is huge.
   if(s.texture_size < 16 || s.texture_size > 16384) throw Cli_error("--texture-size must be in [16, 16384]");
   if(vm.count("texture-size") && !vm["texture-size"].defaulted() && s.texture_obj.empty())

@@ -49,6 +49,8 @@ struct Disk_settings
   std::string density_file;                     ///< `--density`: one value per face or per vertex
   std::vector<Region_option> regions;           ///< `--roi` / `--roi-ball`, in command-line order
   double band = 0;                              ///< `--band`: width of the transition to density 1
+  int outer_loop = 0;                           ///< `--outer-loop`: the border loop mapped to the border (border_loops() order)
+  std::vector<char> on_outer_loop;              ///< per input vertex, once the mesh is read: on that loop (empty: the only loop)
   CGAL::Surface_mesh_parameterization::Discrete_lie_flow_options options;
   Verbosity verbosity = Verbosity::NORMAL;
   bool has_density() const { return !density_file.empty() || !regions.empty(); }

@@ -111,7 +111,8 @@ json seam_json(const Disk_settings& s, const Seam_cut& cut)
   return j;
 }
 
-json make_report(const Disk_settings& s, const Indexed_mesh& input, const Seam_cut& cut, const Disk_run& run,
+json make_report(const Disk_settings& s, const Indexed_mesh& input, const Seam_cut& cut,
+                 const std::vector<Border_loop>& loops, const Disk_run& run,
                  const Metrics* initial, const Metrics* final_metrics, const Density_setup& density, double picture_seconds)
 {
   const SMP::Discrete_lie_flow_report& R = run.report;
@@ -130,6 +131,10 @@ json make_report(const Disk_settings& s, const Indexed_mesh& input, const Seam_c
   j["mode"] = s.mode;
   j["init"] = s.init;
   j["border"] = used_border(run, s);
+  j["border_loops"] = loops.size();
+  j["outer_loop"] = { { "index", s.outer_loop }, { "length", loops[std::size_t(s.outer_loop)].length },
+                      { "vertices", loops[std::size_t(s.outer_loop)].vertices.size() } };
+  j["holes"] = loops.size() - 1; // they float (the library fills them for the flow)
   j["caller_inverted_faces"] = R.caller_inverted_faces;
   j["flowing_inverted_faces"] = R.flowing_inverted_faces;
   j["flips"] = R.flips;
@@ -151,7 +156,8 @@ json make_report(const Disk_settings& s, const Indexed_mesh& input, const Seam_c
   return j;
 }
 
-void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh& input, const Seam_cut& cut, const Disk_run& run,
+void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh& input, const Seam_cut& cut,
+                   const std::vector<Border_loop>& loops, const Disk_run& run,
                    const Metrics* initial, const Metrics* final_metrics, const Density_setup& density,
                    const std::vector<std::string>& written,
                    const std::vector<std::pair<std::string, double> >& picture_timings)
@@ -165,7 +171,16 @@ void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh
     out << ", cut open: " << cut.mesh.xyz.size() << " vertices (one per seam side)\n";
   }
   out << "  mode " << s.mode << ", init " << s.init << ", border " << used_border(run, s) << "\n"
-      << "  status " << run_status(run.status, R) << ": " << R.message << "\n"
+      << "  status " << run_status(run.status, R) << ": " << R.message << "\n";
+  if(loops.size() > 1) {
+    const Border_loop& outer = loops[std::size_t(s.outer_loop)];
+    out << "  border loops " << loops.size() << ": loop " << s.outer_loop << " is outer (length " << outer.length << ", "
+        << outer.vertices.size() << " vertices; --outer-loop K picks another, as 'dlf info' lists them), "
+        << loops.size() - 1 << (loops.size() == 2 ? " hole floats" : " holes float") << "\n"
+        << "  initial map: " << s.init << " places the outer loop; the start is Tutte's embedding of the disk with "
+           "its holes filled\n";
+  }
+  out
       << "  iterations " << R.iterations << " (" << SMP::discrete_lie_flow_stop_reason_name(R.stop_reason) << ")\n";
   if(initial) {
     out << "  d_area " << initial->d_area;
@@ -210,9 +225,22 @@ int disk_command(const std::vector<std::string>& args)
   // which must pass the check of an uncut input; densities and regions are
   // the input's (faces keep their order).
   Seam_cut cut;
-  if(s.seam.empty()) check_disk_topology(input, s.input);
-  else cut = read_and_cut(input, s.input, s.seam, check_disk_topology);
+  if(!s.seam.empty()) cut = read_and_cut(input, s.input, s.seam, check_disk_topology);
   const Indexed_mesh& mesh = s.seam.empty() ? input : cut.mesh;
+  const std::vector<Border_loop> loops = check_disk_topology(mesh, s.input);
+  if(!s.seam.empty() && s.outer_loop != 0)
+    throw Cli_error("--outer-loop applies without --seam (with seams, the longest loop of the cut surface is the outer one)");
+  if(std::size_t(s.outer_loop) >= loops.size())
+    throw Cli_error("--outer-loop " + std::to_string(s.outer_loop) + ": " + s.input + " has " +
+                    std::to_string(loops.size()) + " border loop" + (loops.size() == 1 ? "" : "s") + " (0 to " +
+                    std::to_string(loops.size() - 1) + ", longest first, as 'dlf info' lists them)");
+  if(loops.size() > 1) {
+    s.on_outer_loop.assign(mesh.xyz.size(), 0);
+    for(int v : loops[std::size_t(s.outer_loop)].vertices) s.on_outer_loop[std::size_t(v)] = 1;
+  }
+  if(loops.size() > 1 && s.mode == "paper")
+    throw Cli_error("--mode paper takes disks only: " + s.input + " has " + std::to_string(loops.size() - 1) +
+                    (loops.size() == 2 ? " hole" : " holes") + " (the certified mode, the default, fills them for the flow)");
   Density_setup density = make_density(input, s);
   s.options.face_density = density.face_density; // faces in input order, as Surface_mesh keeps them
 
@@ -265,13 +293,13 @@ int disk_command(const std::vector<std::string>& args)
   if(!s.report.empty()) {
     double picture_seconds = 0;
     for(const auto& p : picture_timings) picture_seconds += p.second;
-    const json report = make_report(s, input, cut, run, initial_ptr, final_ptr, density, picture_seconds);
+    const json report = make_report(s, input, cut, loops, run, initial_ptr, final_ptr, density, picture_seconds);
     outputs.write(s.report, [&](std::ostream& o) { o << report.dump(2) << '\n'; });
   }
   outputs.commit();
 
   if(s.verbosity != Verbosity::QUIET)
-    print_summary(std::cout, s, input, cut, run, initial_ptr, final_ptr, density, outputs.committed(), picture_timings);
+    print_summary(std::cout, s, input, cut, loops, run, initial_ptr, final_ptr, density, outputs.committed(), picture_timings);
   // A region that missed its share is not an error (the map is valid), but never silent.
   for(const Density_region& r : density.regions)
     if(ok && !(std::abs(r.relative_error()) <= region_share_tolerance))

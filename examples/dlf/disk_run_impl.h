@@ -112,7 +112,10 @@ Disk_run run_disk_with(const Indexed_mesh& mesh, const Init& init, const Disk_se
   build_surface_mesh(mesh, sm);
   halfedge_descriptor bhd = boost::graph_traits<Surface_mesh>::null_halfedge();
   for(halfedge_descriptor h : halfedges(sm))
-    if(is_border(h, sm)) { bhd = h; break; } // the only border loop (checked)
+    if(is_border(h, sm) && (settings.on_outer_loop.empty() || settings.on_outer_loop[target(h, sm).idx()])) {
+      bhd = h; // the first on the outer loop (checked: a disk, or a disk with holes)
+      break;
+    }
   auto vimap = sm.add_property_map<vertex_descriptor, int>("v:dlf_index", -1).first;
   for(vertex_descriptor v : vertices(sm)) put(vimap, v, int(v.idx()));
   return run_disk_on(sm, bhd, vimap, init, settings);

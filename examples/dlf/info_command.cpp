@@ -9,6 +9,7 @@
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
+#include "mesh_input.h"
 #include "output_files.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -43,10 +44,12 @@ const char* info_help =
   "degeneracies: vertices (unreferenced, duplicate positions, non-finite; duplicates\n"
   "on the border are the two sides of a seam, fine for 'dlf disk'), faces\n"
   "(triangles or not), edges (border, non-manifold, inconsistently oriented),\n"
-  "connected components, border loops, Euler characteristic and genus,\n"
-  "non-manifold vertices, degenerate and zero-area faces, the smallest angle,\n"
-  "the bounding box; and which command fits: 'dlf disk' (a topological disk),\n"
-  "'dlf sphere' (closed, genus 0), or neither, and why.\n"
+  "connected components, border loops (each with its length and vertex count,\n"
+  "longest first: the order of 'dlf disk --outer-loop'), Euler characteristic\n"
+  "and genus, non-manifold vertices, degenerate and zero-area faces, the\n"
+  "smallest angle, the bounding box; and which command fits: 'dlf disk' (a\n"
+  "topological disk, or a genus-0 mesh with holes), 'dlf sphere' (closed,\n"
+  "genus 0), or neither, and why.\n"
   "\n"
   "Exit status: 0 when MESH was read (whatever it is), 1 otherwise.\n"
   "\n"
@@ -232,13 +235,13 @@ std::string verdict(const Mesh_info& m, std::string& reason)
   if(m.zero_area_faces) problems.push_back(count(m.zero_area_faces, "zero-area face", "zero-area faces") + " (the flow refuses them)");
   if(m.components != 1) problems.push_back(count(m.components, "connected component", "connected components") + " (keep one)");
   const long g = m.genus();
-  const bool disk = m.components == 1 && m.border_loops == 1 && m.euler == 1;
+  // A disk, or a disk with holes (genus 0, several loops): dlf disk fills the holes.
+  const bool disk = m.components == 1 && m.border_loops >= 1 && m.euler == 2 - long(m.border_loops);
   const bool sphere = m.components == 1 && m.border_loops == 0 && m.euler == 2;
   if(problems.empty() && disk) return "dlf disk";
   if(problems.empty() && sphere) return "dlf sphere";
   if(problems.empty()) {
     if(m.border_loops == 0) problems.push_back("closed surface of genus " + std::to_string(g) + " (cut it open into a disk)");
-    else if(g == 0) problems.push_back(count(m.border_loops, "border loop", "border loops") + " (fill all holes but one)");
     else problems.push_back("genus " + std::to_string(g) + " with " + count(m.border_loops, "border loop", "border loops") +
                             " (cut it into a disk)");
   }
@@ -246,7 +249,8 @@ std::string verdict(const Mesh_info& m, std::string& reason)
   return "none";
 }
 
-json info_json(const std::string& path, const Mesh_info& m, const std::string& fits, const std::string& reason)
+json info_json(const std::string& path, const Mesh_info& m, const std::vector<Border_loop>& loops, const std::string& fits,
+               const std::string& reason)
 {
   json j;
   j["mesh"] = path;
@@ -263,6 +267,9 @@ json info_json(const std::string& path, const Mesh_info& m, const std::string& f
   j["inconsistently_oriented_edges"] = m.misoriented_edges;
   j["connected_components"] = m.components;
   j["border_loops"] = m.border_loops;
+  json list = json::array();
+  for(const Border_loop& l : loops) list.push_back({ { "length", l.length }, { "vertices", l.vertices.size() } });
+  j["loops"] = list; // longest first: the order of dlf disk --outer-loop
   j["euler_characteristic"] = m.euler;
   j["genus"] = m.genus() >= 0 ? json(m.genus()) : json(nullptr);
   j["non_manifold_vertices"] = m.non_manifold_vertices;
@@ -277,8 +284,8 @@ json info_json(const std::string& path, const Mesh_info& m, const std::string& f
   return j;
 }
 
-void print_info(std::ostream& out, const std::string& path, const Mesh_info& m, const std::string& fits,
-                const std::string& reason)
+void print_info(std::ostream& out, const std::string& path, const Mesh_info& m, const std::vector<Border_loop>& loops,
+                const std::string& fits, const std::string& reason)
 {
   const double diagonal = std::sqrt((m.hi[0] - m.lo[0]) * (m.hi[0] - m.lo[0]) + (m.hi[1] - m.lo[1]) * (m.hi[1] - m.lo[1]) +
                                     (m.hi[2] - m.lo[2]) * (m.hi[2] - m.lo[2]));
@@ -292,8 +299,12 @@ void print_info(std::ostream& out, const std::string& path, const Mesh_info& m, 
       << "  edges                 " << m.edges << " (" << m.border_edges << " border, " << m.non_manifold_edges
       << " non-manifold, " << m.misoriented_edges << " inconsistently oriented)\n"
       << "  connected components  " << m.components << "\n"
-      << "  border loops          " << m.border_loops << (m.manifold() ? "" : " (connected sets of border edges)") << "\n"
-      << "  Euler characteristic  " << m.euler << "\n"
+      << "  border loops          " << m.border_loops << (m.manifold() ? "" : " (connected sets of border edges)") << "\n";
+  // Longest first: dlf disk --outer-loop K counts them in this order.
+  for(std::size_t k = 0; k < loops.size() && loops.size() > 1; ++k)
+    out << "    loop " << k << "              length " << loops[k].length << ", " << loops[k].vertices.size() << " vertices"
+        << (k == 0 ? " (the outer loop of dlf disk unless --outer-loop)" : "") << "\n";
+  out      << "  Euler characteristic  " << m.euler << "\n"
       << "  genus                 " << (m.genus() >= 0 ? std::to_string(m.genus()) : std::string("n/a (not one manifold component)"))
       << "\n"
       << "  non-manifold vertices " << m.non_manifold_vertices << "\n"
@@ -304,6 +315,8 @@ void print_info(std::ostream& out, const std::string& path, const Mesh_info& m, 
       << "  bounding box          [" << m.lo[0] << ", " << m.hi[0] << "] x [" << m.lo[1] << ", " << m.hi[1] << "] x ["
       << m.lo[2] << ", " << m.hi[2] << "], diagonal " << diagonal << "\n";
   if(fits == "none") out << "  fits                  neither dlf disk nor dlf sphere: " << reason << "\n";
+  else if(fits == "dlf disk" && m.border_loops > 1)
+    out << "  fits                  dlf disk (a disk with " << count(m.border_loops - 1, "hole", "holes") << ": they float)\n";
   else out << "  fits                  " << fits << (fits == "dlf disk" ? " (a topological disk)" : " (closed, genus 0)") << "\n";
 }
 
@@ -356,13 +369,21 @@ int info_command(const std::vector<std::string>& args)
   const Mesh_info m = analyse(points, polygons);
   std::string reason;
   const std::string fits = verdict(m, reason);
+  std::vector<Border_loop> loops;
+  if(m.usable()) {
+    std::vector<Vec3> xyz;
+    for(const Point_3& p : points) xyz.push_back({ { p.x(), p.y(), p.z() } });
+    std::vector<Triangle> triangles;
+    for(const Polygon& p : polygons) triangles.push_back({ { int(p[0]), int(p[1]), int(p[2]) } });
+    loops = border_loops(xyz, triangles);
+  }
   if(!report.empty()) {
-    const json j = info_json(path, m, fits, reason);
+    const json j = info_json(path, m, loops, fits, reason);
     outputs.write(report, [&](std::ostream& o) { o << j.dump(2) << '\n'; });
   }
   outputs.commit();
   if(vm.count("quiet") == 0) {
-    print_info(std::cout, path, m, fits, reason);
+    print_info(std::cout, path, m, loops, fits, reason);
     for(const std::string& w : outputs.committed()) std::cout << "  wrote " << w << "\n";
   }
   return EXIT_OK;

@@ -297,54 +297,74 @@ Indexed_mesh read_triangle_mesh(const std::string& path)
   return mesh;
 }
 
-void check_disk_topology(const Indexed_mesh& mesh, const std::string& path)
+std::vector<Border_loop> border_loops(const std::vector<Vec3>& xyz, const std::vector<Triangle>& faces)
+{
+  // Undirected edges used by one face; on a manifold border every border
+  // vertex has two border neighbours, and the loops are walked from their
+  // smallest vertex index.
+  std::map<std::pair<int, int>, int> uses;
+  for(const Triangle& t : faces)
+    for(int k = 0; k < 3; ++k) ++uses[std::minmax(t[k], t[(k + 1) % 3])];
+  std::map<int, std::vector<int> > around;
+  for(const auto& e : uses)
+    if(e.second == 1) { around[e.first.first].push_back(e.first.second); around[e.first.second].push_back(e.first.first); }
+  std::vector<Border_loop> loops;
+  std::map<int, bool> walked;
+  for(const auto& start : around) {
+    if(walked[start.first]) continue;
+    Border_loop loop;
+    for(int previous = -1, v = start.first; v >= 0 && !walked[v]; ) {
+      walked[v] = true;
+      loop.vertices.push_back(v);
+      int next = -1;
+      for(int w : around[v])
+        if(w != previous && !walked[w]) { next = w; break; }
+      previous = v;
+      v = next;
+    }
+    const std::size_t n = loop.vertices.size();
+    for(std::size_t k = 0; k < n; ++k) {
+      const Vec3 &a = xyz[std::size_t(loop.vertices[k])], &b = xyz[std::size_t(loop.vertices[(k + 1) % n])];
+      loop.length += std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+    }
+    loops.push_back(loop);
+  }
+  std::stable_sort(loops.begin(), loops.end(), [](const Border_loop& x, const Border_loop& y) { return x.length > y.length; });
+  return loops;
+}
+
+std::vector<Border_loop> check_disk_topology(const Indexed_mesh& mesh, const std::string& path)
 {
   const std::size_t V = mesh.xyz.size(), F = mesh.faces.size();
-  // Directed edges; a border edge is one whose reverse is absent. The mesh is
-  // manifold and consistently oriented (read_triangle_mesh), so every border
-  // vertex starts exactly one border edge and the loops can be walked.
+  // Directed edges; a border edge is one whose reverse is absent.
   std::map<std::pair<int, int>, int> directed;
   for(const Triangle& t : mesh.faces)
     for(int k = 0; k < 3; ++k) directed[{ t[k], t[(k + 1) % 3] }] = 1;
-  std::map<int, int> border_next; // b -> a for every border edge (b, a), reversed face edge a -> b
   std::size_t E = 0;
-  for(const auto& e : directed) {
-    const std::pair<int, int> reverse(e.first.second, e.first.first);
-    if(directed.count(reverse) == 0) { border_next[e.first.second] = e.first.first; ++E; }
-    else if(e.first.first < e.first.second) ++E;
-  }
-  std::size_t loops = 0;
-  std::map<int, bool> walked;
-  for(const auto& b : border_next) {
-    if(walked[b.first]) continue;
-    ++loops;
-    for(int v = b.first; !walked[v]; ) {
-      walked[v] = true;
-      const auto next = border_next.find(v);
-      if(next == border_next.end()) break;
-      v = next->second;
-    }
-  }
+  for(const auto& e : directed)
+    if(directed.count({ e.first.second, e.first.first }) == 0 || e.first.first < e.first.second) ++E;
+  std::vector<Border_loop> loops = border_loops(mesh.xyz, mesh.faces);
   Union_find uf(V);
   for(const Triangle& t : mesh.faces) { uf.unite(std::size_t(t[0]), std::size_t(t[1])); uf.unite(std::size_t(t[1]), std::size_t(t[2])); }
   std::size_t components = 0;
   for(std::size_t i = 0; i < V; ++i)
     if(uf.find(i) == i) ++components;
   const long euler = long(V) - long(E) + long(F);
-  if(components == 1 && loops == 1 && euler == 1) return;
+  // χ = 2 − 2g − b for a connected orientable surface with b border loops:
+  // a disk (b = 1, χ = 1) or a disk with holes (χ = 2 − b).
+  if(components == 1 && !loops.empty() && euler == 2 - long(loops.size())) return loops;
 
   std::ostringstream s;
-  s << quoted(path) << ": not a topological disk: found " << components << " connected component"
-    << (components == 1 ? "" : "s") << ", " << loops << " border loop" << (loops == 1 ? "" : "s");
+  s << quoted(path) << ": not a disk (with or without holes): found " << components << " connected component"
+    << (components == 1 ? "" : "s") << ", " << loops.size() << " border loop" << (loops.size() == 1 ? "" : "s");
   if(components == 1) {
-    // χ = 2 − 2g − b for a connected orientable surface with b border loops.
-    const long twice_genus = 2 - long(loops) - euler;
+    const long twice_genus = 2 - long(loops.size()) - euler;
     s << ", genus " << twice_genus / 2;
-    if(loops == 0 && twice_genus == 0) s << " (a closed sphere-like surface: cut it open first)";
+    if(loops.empty() && twice_genus == 0) s << " (a closed sphere-like surface: cut it open first)";
   } else {
     s << ", Euler characteristic " << euler;
   }
-  s << "; a disk has 1 component, 1 border loop, genus 0";
+  s << "; dlf disk takes 1 component of genus 0 with at least 1 border loop (the others are holes)";
   throw Cli_error(s.str());
 }
 

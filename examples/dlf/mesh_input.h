@@ -33,9 +33,23 @@ struct Indexed_mesh
 /// non-triangle faces, unreferenced vertices, or non-manifold input.
 Indexed_mesh read_triangle_mesh(const std::string& path);
 
+/// A border loop: its vertices in walking order, from its smallest index.
+struct Border_loop
+{
+  std::vector<int> vertices;
+  double length = 0; ///< 3D length
+};
+
+/// The border loops of a manifold triangle mesh (orientation not needed),
+/// longest first by 3D length, ties by smallest vertex index: the order in
+/// which `dlf info` lists them and `dlf disk --outer-loop K` counts them from 0.
+std::vector<Border_loop> border_loops(const std::vector<Vec3>& xyz, const std::vector<Triangle>& faces);
+
 /// Throws `Cli_error` naming what was found (connected components, border
-/// loops, genus) unless `mesh` is a topological disk.
-void check_disk_topology(const Indexed_mesh& mesh, const std::string& path);
+/// loops, genus) unless `mesh` is a topological disk or a disk with holes
+/// (one component, genus 0, at least one border loop); returns its border
+/// loops, as `border_loops()` orders them.
+std::vector<Border_loop> check_disk_topology(const Indexed_mesh& mesh, const std::string& path);
 
 } // namespace dlf_cli
 

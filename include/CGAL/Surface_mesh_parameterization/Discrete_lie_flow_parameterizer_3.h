@@ -32,6 +32,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -50,6 +51,18 @@ namespace Surface_mesh_parameterization {
 /// Two modes (`Discrete_lie_flow_options::mode`): `CERTIFIED` (default) keeps
 /// the caller's connectivity and never folds it; `PAPER` follows the paper,
 /// flipping edges of the flowing domain mesh.
+///
+/// Meshes with holes (a connected genus-0 component with several border
+/// loops, certified mode): the loop of `bhd` goes to the domain's border
+/// (circle, square or free, as the initial parameterizer places it); every
+/// other loop floats. The flow runs on the disk made by filling each hole
+/// with a fan of virtual triangles around a virtual vertex (their targets:
+/// the fan's 3D area), starting from Tutte's embedding of that filled disk
+/// inside the initial parameterizer's outer loop (the library's own start:
+/// the initial parameterizer cannot see the fill). The fill stays positively
+/// oriented like the caller's triangles, so the result is globally
+/// injective: no hole overlaps the rest of the map. The map, the report and
+/// the area elements are about the caller's vertices and faces only.
 ///
 /// \cgalModels `Parameterizer_3`
 ///
@@ -154,8 +167,9 @@ public:
   /// whose triangles all have the orientation of the initial map's (never NaN); on error, `uvmap` keeps whatever the
   /// initial parameterizer wrote, and the report's message names the element.
   ///
-  /// \pre `bhd` is a border halfedge of `mesh`; `vimap` indexes the vertices
-  /// of its connected component from 0.
+  /// \pre `bhd` is a border halfedge of `mesh`, whose connected component is
+  /// a disk or, in certified mode, a disk with holes (genus 0); `vimap`
+  /// indexes the vertices of that component from 0.
   template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>
   Error_code parameterize(Triangle_mesh& mesh, halfedge_descriptor bhd, VertexUVmap uvmap,
                           VertexIndexMap vimap, VertexParameterizedMap vpmap)
@@ -183,14 +197,37 @@ public:
     if(code != OK) return fail(code, std::string("initial map: ") + discrete_lie_flow_error_message(code));
 
     std::vector<D::Vec2> uv(vertex_of.size());
+    // With holes, only the outer loop is taken from the initial map.
+    std::vector<char> taken(vertex_of.size(), P.fill_faces == 0);
+    for(int b : P.boundary) taken[std::size_t(b)] = 1;
     for(std::size_t i = 0; i < vertex_of.size(); ++i) {
       const Point_2 p = get(uvmap, vertex_of[i]);
       uv[i] = {{ CGAL::to_double(p.x()), CGAL::to_double(p.y()) }};
-      if(!std::isfinite(uv[i][0]) || !std::isfinite(uv[i][1]))
+      if(taken[i] && (!std::isfinite(uv[i][0]) || !std::isfinite(uv[i][1])))
         return fail(ERROR_INITIAL_MAP_FOLDED, "initial map: vertex " + std::to_string(i) + " has a non-finite uv");
     }
+    if(P.fill_faces > 0) {
+      // The initial parameterizer does not see the fill: it gives the outer
+      // loop (the domain's border), and the start is Tutte's embedding of
+      // the filled disk inside it, bijective in exact arithmetic when the
+      // loop is convex; flow_disk() certifies it by the exact predicate.
+      const Clock::time_point t1 = Clock::now();
+      uv.resize(P.xyz.size(), D::Vec2{{ 0, 0 }});
+      if(!D::filled_disk_tutte<typename std::remove_reference<decltype(m_solver_traits.solver())>::type>(P, uv))
+        return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "initial map: the Tutte solve of the disk with filled holes failed");
+      R.seconds_initial += std::chrono::duration<double>(Clock::now() - t1).count();
+    }
     code = D::flow_disk(P, uv, m_options, m_solver_traits.solver(), R);
-    if(code != OK) return code;
+    if(code != OK) {
+      if(int(code) == int(ERROR_INITIAL_MAP_FOLDED) && P.fill_faces > 0)
+        R.message += " (the start on the disk with filled holes: Tutte's embedding inside the initial map's outer loop, "
+                     "bijective only when that loop is convex)";
+      return code;
+    }
+    if(P.fill_faces > 0)
+      R.message = "Success; " + std::to_string(P.holes) + (P.holes == 1 ? " hole" : " holes") +
+                  " filled for the flow and left free; initial map: Tutte's embedding of the filled disk "
+                  "inside the initial parameterizer's outer loop";
     for(std::size_t i = 0; i < vertex_of.size(); ++i) put(uvmap, vertex_of[i], Point_2(uv[i][0], uv[i][1]));
     // On a Surface_mesh, the area elements and the densities become properties of the mesh.
     D::store_area_elements(mesh, vertex_of, R.target_area, R.domain_area, face_of, R.face_density);
@@ -292,19 +329,60 @@ private:
         return fail(Error_code(ERROR_INVALID_DENSITY), "the density of face " + face_name(mesh, vimap, face_of[f]) + " is " + std::to_string(rho));
       P.target[f] = rho * a;
     }
-    // The border loop of bhd.
-    for(halfedge_descriptor h : halfedges_around_face(bhd, mesh)) P.boundary.push_back(int(get(vimap, target(h, mesh))));
-    if(P.boundary.size() < 3) return fail(ERROR_BORDER_TOO_SHORT, "the border has fewer than 3 vertices");
-    // A disk: V − E + F = 1 and a single border loop.
+    // The border loops, bhd's first; each as its border halfedges.
+    std::vector<std::vector<halfedge_descriptor> > loops(1);
+    for(halfedge_descriptor h : halfedges_around_face(bhd, mesh)) loops[0].push_back(h);
+    std::set<halfedge_descriptor> walked(loops[0].begin(), loops[0].end());
     std::size_t border_edges = 0;
     for(face_descriptor f : face_of)
-      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh))
-        if(is_border(opposite(h, mesh), mesh)) ++border_edges;
+      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh)) {
+        const halfedge_descriptor o = opposite(h, mesh);
+        if(!is_border(o, mesh)) continue;
+        ++border_edges;
+        if(!walked.insert(o).second) continue;
+        loops.emplace_back(1, o);
+        for(halfedge_descriptor b = next(o, mesh); b != o; b = next(b, mesh)) { loops.back().push_back(b); walked.insert(b); }
+      }
+    for(halfedge_descriptor h : loops[0]) P.boundary.push_back(int(get(vimap, target(h, mesh))));
+    if(P.boundary.size() < 3) return fail(ERROR_BORDER_TOO_SHORT, "the border has fewer than 3 vertices");
+    // χ = V − E + F = 2 − 2g − (loops): a disk has one loop and χ = 1; a
+    // genus-0 mesh with holes has χ = 2 − loops.
     const std::size_t E = (3 * P.faces.size() + border_edges) / 2;
-    if(border_edges != P.boundary.size() || long(n) - long(E) + long(P.faces.size()) != 1)
-      return fail(ERROR_NO_TOPOLOGICAL_DISC, "the component has " + std::to_string(border_edges) + " border edges, " +
-                  std::to_string(P.boundary.size()) + " on the given loop, Euler characteristic " +
-                  std::to_string(long(n) - long(E) + long(P.faces.size())) + " (a disk has one loop and 1)");
+    const long chi = long(n) - long(E) + long(P.faces.size());
+    if(loops.size() == 1 && chi == 1) return OK;
+    const long twice_genus = 2 - chi - long(loops.size());
+    if(twice_genus != 0) {
+      std::string s = "the component has " + std::to_string(loops.size()) + " border loop" +
+                      (loops.size() == 1 ? "" : "s") + " (" + std::to_string(border_edges) + " border edges, " +
+                      std::to_string(P.boundary.size()) + " on the given loop), Euler characteristic " + std::to_string(chi);
+      if(twice_genus > 0 && twice_genus % 2 == 0) s += ", genus " + std::to_string(twice_genus / 2);
+      if(face_of.size() < faces(mesh).size())
+        s += "; it is one of the mesh's connected components (" + std::to_string(face_of.size()) + " of " +
+             std::to_string(faces(mesh).size()) + " faces)";
+      return fail(ERROR_NO_TOPOLOGICAL_DISC, s + "; the parameterizer takes genus 0: a disk, or a disk with holes");
+    }
+    // Genus 0 with holes: fill every other loop. A vertex on two loops
+    // (or twice on one) would give the fill a repeated edge.
+    std::vector<char> on_loop(n, 0);
+    for(const std::vector<halfedge_descriptor>& loop : loops)
+      for(halfedge_descriptor h : loop) {
+        const std::size_t v = std::size_t(get(vimap, target(h, mesh)));
+        if(on_loop[v]++)
+          return fail(ERROR_NO_TOPOLOGICAL_DISC, "vertex " + std::to_string(v) + " lies twice on the border loops "
+                      "(a pinched border); a disk with holes needs them disjoint");
+      }
+    std::map<face_descriptor, std::size_t> index_of;
+    for(std::size_t k = 0; k < face_of.size(); ++k) index_of.emplace(face_of[k], k);
+    for(std::size_t l = 1; l < loops.size(); ++l) {
+      std::vector<int> loop;
+      std::vector<std::size_t> across;
+      // The border halfedge s → t: the fill face (s, t, c) has the caller's orientation.
+      for(halfedge_descriptor h : loops[l]) {
+        loop.push_back(int(get(vimap, source(h, mesh))));
+        across.push_back(index_of[face(opposite(h, mesh), mesh)]);
+      }
+      D::fill_hole(P, loop, across);
+    }
     return OK;
   }
 

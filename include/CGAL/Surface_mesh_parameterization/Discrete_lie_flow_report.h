@@ -58,8 +58,8 @@ struct Discrete_lie_flow_report
   std::size_t faces = 0;        ///< of the flowed component (the disk) or mesh (the sphere)
   /// The number of accepted iterations.
   std::size_t iterations = 0;
-  double initial_d_area = 0;    ///< on the certified triangulation, before the flow
-  double final_d_area = 0;      ///< on the certified triangulation (the flowing one in paper mode)
+  double initial_d_area = 0;    ///< on the certified triangulation, before the flow (with holes: on the caller's faces)
+  double final_d_area = 0;      ///< on the certified triangulation (the flowing one in paper mode; with holes: the caller's faces)
   double final_residual = 0;    ///< Σ (A_Ω − A_M)² / (Σ A_Ω)² on that triangulation
   /// The largest error of a region's share of the domain (the measure of
   /// `share_tolerance`, doc/measure_control.md); 0 without a density.
@@ -68,7 +68,8 @@ struct Discrete_lie_flow_report
   /// The caller's triangles not positively oriented under the final map
   /// (exact predicate; inverted or degenerate): 0 in certified mode.
   std::size_t caller_inverted_faces = 0;
-  /// The certified triangulation's (the flowing one in paper mode): always 0 on success.
+  /// The certified triangulation's (the flowing one in paper mode; with
+  /// holes, the caller's faces and the fill of the holes): always 0 on success.
   std::size_t flowing_inverted_faces = 0;
   std::size_t rejected_by_exact_check = 0; ///< trial steps the doubles accepted and the exact predicate refused
   std::size_t factorizations = 0;          ///< numeric factorisations of the flow's sparse matrices
@@ -103,6 +104,12 @@ struct Discrete_lie_flow_report
   /// except with flips off, or when the last flips were undone because they
   /// raised D_area: starts compressed to the rounding level).
   std::size_t flowing_non_delaunay_edges = 0;
+  /// The disk: the border loops other than the given one (holes), filled for
+  /// the flow and left free; 0 for a disk. With holes the initial map is the
+  /// library's own (Tutte's embedding of the filled disk inside the initial
+  /// parameterizer's outer loop), and `history` and `final_residual` follow
+  /// the filled disk.
+  std::size_t holes = 0;
   /// The sphere: the face of the initial map's north cap (index in face order).
   int puncture_face = -1;
   /// The sphere: the plane scale of the stereographic lift.

@@ -14,6 +14,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/boundary_curve.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certification.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/density_levels.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_holes.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_problem.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/distortion.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow_driver.h>
@@ -121,8 +122,15 @@ Error_code flow_disk(Disk_problem& P, std::vector<Vec2>& uv, const Discrete_lie_
 {
   typedef std::chrono::steady_clock Clock;
   const Scoped_blas_threads threads(opt.solver_threads, uv.size());
-  R.vertices = uv.size();
-  R.faces = P.faces.size();
+  // With holes (P.fill_faces > 0) the flow runs on the filled disk; the
+  // report speaks of the caller's vertices and faces only.
+  const bool holes = P.fill_faces > 0;
+  R.vertices = P.caller_vertices();
+  R.faces = P.caller_faces();
+  R.holes = P.holes;
+  if(holes && opt.mode == Discrete_lie_flow_mode::PAPER)
+    return report_failure(R, ERROR_NO_TOPOLOGICAL_DISC, "the paper mode takes disks only (the mesh has " +
+                          std::to_string(P.holes) + (P.holes == 1 ? " hole" : " holes") + "); the certified mode fills them");
   // Some border parameterizers run clockwise: the flow then works on the
   // faces with their index order reversed.
   Orientation_count oc = count_orientations_2(uv, P.faces);
@@ -150,8 +158,9 @@ Error_code flow_disk(Disk_problem& P, std::vector<Vec2>& uv, const Discrete_lie_
   }
   Boundary_curve curve(loop, opt.disk.border);
   R.border = curve.kind();
-  R.face_density = face_densities(P);
-  R.initial_metrics = planar_distortion(P.xyz, uv, P.faces, R.face_density);
+  const std::vector<Face> caller_faces = caller_part(P.faces, P);
+  R.face_density = caller_part(face_densities(P), P);
+  R.initial_metrics = planar_distortion(P.xyz, uv, caller_faces, R.face_density);
 
   const Clock::time_point t0 = Clock::now();
   Flow_outcome out;
@@ -163,18 +172,28 @@ Error_code flow_disk(Disk_problem& P, std::vector<Vec2>& uv, const Discrete_lie_
     out = run_flow(flow, opt);
   }
   R.seconds_flow = std::chrono::duration<double>(Clock::now() - t0).count();
-  report_area_elements(uv, out, [](const std::vector<Vec2>& x, const std::vector<Face>& F, std::vector<double>& u) {
+  // The fill counts here: a non-positive fill face would let a hole overlap the caller's faces.
+  const Orientation_count dc = count_orientations_2(uv, out.domain_faces);
+  R.flowing_inverted_faces = dc.inverted + dc.degenerate;
+  const std::vector<Vec2> caller_uv(uv.begin(), uv.begin() + std::ptrdiff_t(P.caller_vertices()));
+  if(holes) {
+    out.domain_faces = caller_part(out.domain_faces, P);
+    out.domain_target = caller_part(out.domain_target, P);
+  }
+  report_area_elements(caller_uv, out, [](const std::vector<Vec2>& x, const std::vector<Face>& F, std::vector<double>& u) {
     signed_areas_2(x, F, u);
   }, R);
   report_outcome(out, R);
   std::vector<double> caller_areas;
-  signed_areas_2(uv, P.faces, caller_areas);
-  R.final_share_error = Density_levels(P.xyz, P.faces, P.target).error(caller_areas);
-  R.final_metrics = planar_distortion(P.xyz, uv, P.faces, R.face_density);
-  const Orientation_count cc = count_orientations_2(uv, P.faces);
+  signed_areas_2(uv, caller_faces, caller_areas);
+  R.final_share_error = Density_levels(P.xyz, caller_faces, caller_part(P.target, P)).error(caller_areas);
+  R.final_metrics = planar_distortion(P.xyz, uv, caller_faces, R.face_density);
+  if(holes) { // the flow's D_area is the filled disk's
+    R.initial_d_area = R.initial_metrics.d_area;
+    R.final_d_area = R.final_metrics.d_area;
+  }
+  const Orientation_count cc = count_orientations_2(uv, caller_faces);
   R.caller_inverted_faces = cc.inverted + cc.degenerate;
-  const Orientation_count dc = count_orientations_2(uv, out.domain_faces);
-  R.flowing_inverted_faces = dc.inverted + dc.degenerate;
   return report_verdict(out, R);
 }
 

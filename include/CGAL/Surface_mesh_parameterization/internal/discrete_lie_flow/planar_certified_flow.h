@@ -19,6 +19,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certification.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/critical_step.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/density_levels.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_holes.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_problem.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow_driver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/planar_dofs.h>
@@ -74,7 +75,7 @@ public:
       m_sobolev(m_dofs.boundary_of, eigen_solver), m_newton_solver(m_newton_eigen_solver),
       m_newton_system(m_dofs.first, m_dofs.count, m_dofs.size), m_eps(settings.newton_regularization),
       m_basis(std::size_t(m_dofs.size)), m_tangent(uv.size()), m_around(0, std::vector<Face>()),
-      m_levels(P.xyz, P.faces, P.target)
+      m_levels(P.xyz, caller_part(P.faces, P), caller_part(P.target, P)), m_caller_energy(caller_part(P.target, P))
   {}
 
   bool start(Flow_outcome& out)
@@ -86,10 +87,17 @@ public:
     return std::isfinite(m_E);
   }
 
+  /// D_area within the tolerance, and the shares of the density's regions;
+  /// with holes, both on the caller's faces too (the fill is not the
+  /// caller's surface, and D_area of the filled disk may hide it).
   bool converged() const
   {
-    return m_E - 2 <= m_opt.tolerance &&
-           (!(m_opt.certified.share_tolerance > 0) || m_levels.error(m_u) <= m_opt.certified.share_tolerance);
+    if(!(m_E - 2 <= m_opt.tolerance)) return false;
+    if(m_P.fill_faces == 0)
+      return !(m_opt.certified.share_tolerance > 0) || m_levels.error(m_u) <= m_opt.certified.share_tolerance;
+    const std::vector<double> u = caller_part(m_u, m_P);
+    return m_caller_energy.value(u) - 2 <= m_opt.tolerance &&
+           (!(m_opt.certified.share_tolerance > 0) || m_levels.error(u) <= m_opt.certified.share_tolerance);
   }
 
   /// The Sobolev gradient of E (of L in the opening), or the Gauss–Newton
@@ -274,7 +282,8 @@ private:
   Eigen::VectorXd m_gr, m_d;
   Vertex_faces m_around;
   std::vector<char> m_movable;
-  const Density_levels m_levels;
+  const Density_levels m_levels;     // the caller's faces only
+  const Area_barrier_energy m_caller_energy; // D_area of the caller's faces (holes)
 };
 
 /// Runs the certified flow from the positively oriented `uv` (modified in
