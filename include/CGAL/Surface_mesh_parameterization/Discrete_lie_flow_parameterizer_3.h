@@ -225,7 +225,7 @@ public:
       return code;
     }
     if(P.fill_faces > 0)
-      R.message = "Success; " + std::to_string(P.holes) + (P.holes == 1 ? " hole" : " holes") +
+      R.message = (R.converged() ? std::string("Success") : R.message) + "; " + std::to_string(P.holes) + (P.holes == 1 ? " hole" : " holes") +
                   " filled for the flow and left free; initial map: Tutte's embedding of the filled disk "
                   "inside the initial parameterizer's outer loop";
     for(std::size_t i = 0; i < vertex_of.size(); ++i) put(uvmap, vertex_of[i], Point_2(uv[i][0], uv[i][1]));
