@@ -29,7 +29,7 @@ BENCH="$BUILD_DIR/benchmark/dlf_benchmark"
 MESHES="${MESHES:-$BUILD_DIR/data/meshes}"
 MARKDOWN=""
 [[ "${1:-}" == "--markdown" ]] && MARKDOWN="$2"
-for x in "$DLF" "$CUT" "$BENCH"; do
+for x in "$DLF" "$BENCH"; do
   [[ -x "$x" ]] || { echo "cut_surfaces: $x not built (-DDLF_BUILD_BENCHMARK=ON)" >&2; exit 2; }
 done
 # As users run: whatever thread settings the caller's shell has are dropped.
@@ -39,6 +39,10 @@ unset OMP_THREAD_LIMIT OMP_NUM_THREADS OPENBLAS_NUM_THREADS GOTO_NUM_THREADS
 all_cases=(
   "blob:seam blob.off test/data/blob.selection.txt"
   "bear:seam bear.off test/data/bear.selection.txt"
+  "lion-seam:seam lion.off test/data/lion.selection.txt"
+  "lion2-seam:seam lion.off test/data/lion2.selection.txt"
+  "lion3-seam:seam lion.off test/data/lion3.selection.txt"
+  "lion4-seam:seam lion.off test/data/lion4.selection.txt"
   "cow-6:cut cow.off 6"
   "bull-6:cut bull.off 6"
   "dino-6:cut dino.off 6"
@@ -93,6 +97,7 @@ with open(sys.argv[2], 'w') as out:
 EOF
       ;;
     cut|cut-root)
+      [[ -x "$CUT" ]] || { echo "cut_surfaces: $CUT not built (-DDLF_BUILD_BENCHMARK=ON)" >&2; exit 2; }
       "$CUT" "${how[0]}" "$MESHES/${how[1]}" "${how[2]}" "$cut_mesh" >/dev/null
       input="$cut_mesh" ;;
     holes)
