@@ -4,10 +4,13 @@
 // Makes long thin disks for the flow (cut_to_disk.h):
 //
 //   cut_to_disk cut CLOSED.off K OUT.off [SEAM.selection.txt]
-//       cut a closed mesh open along a shortest-path tree through K tips
-//       (and a cut graph of its handles): OUT.off has the seam's vertices
-//       duplicated; SEAM.selection.txt lists the seam edges of CLOSED.off
-//       (for CGAL's Seam_mesh)
+//       cut a closed mesh open along a tree of shortest paths through K
+//       tips (and a cut graph of its handles): OUT.off has the seam's
+//       vertices duplicated; SEAM.selection.txt lists the seam edges of
+//       CLOSED.off (for CGAL's Seam_mesh)
+//   cut_to_disk cut-root CLOSED.off K OUT.off [SEAM.selection.txt]
+//       the same, each tip by its own shortest path to the first tip: the
+//       branches run side by side before they merge
 //   cut_to_disk maze N S OUT.off      N × N cells, S × S squares per block
 //   cut_to_disk comb TEETH LENGTH S OUT.off
 //   cut_to_disk spiral TURNS S OUT.off
@@ -27,7 +30,7 @@ namespace {
 
 int usage()
 {
-  std::cerr << "usage: cut_to_disk cut CLOSED.off K OUT.off [SEAM.selection.txt]\n"
+  std::cerr << "usage: cut_to_disk cut|cut-root CLOSED.off K OUT.off [SEAM.selection.txt]\n"
                "       cut_to_disk maze N S OUT.off | comb TEETH LENGTH S OUT.off | spiral TURNS S OUT.off\n"
                "       cut_to_disk slits N SLITS LENGTH OUT.off\n";
   return 2;
@@ -60,13 +63,13 @@ int main(int argc, char** argv)
   if(argc < 2) return usage();
   const std::string what = argv[1];
   bool ok = false;
-  if(what == "cut" && (argc == 5 || argc == 6)) {
+  if((what == "cut" || what == "cut-root") && (argc == 5 || argc == 6)) {
     dlf_cut::Mesh closed;
     std::ifstream in(argv[2]);
     if(!dlf_cut::read_off(in, closed)) { std::cerr << "cut_to_disk: cannot read " << argv[2] << "\n"; return 1; }
     const long chi = dlf_cut::euler_characteristic(closed);
     const std::vector<int> tips = dlf_cut::extremities(closed, std::size_t(std::atoi(argv[3])));
-    const std::set<dlf_cut::Edge> seam = dlf_cut::cut_graph(closed, tips);
+    const std::set<dlf_cut::Edge> seam = dlf_cut::cut_graph(closed, tips, what == "cut");
     const dlf_cut::Mesh disk = dlf_cut::cut_open(closed, seam);
     ok = write(argv[4], disk);
     std::cout << " genus " << (2 - chi) / 2 << " seam_edges " << seam.size() << " tips";

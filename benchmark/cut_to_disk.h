@@ -187,26 +187,57 @@ inline long euler_characteristic(const Mesh& m)
   return long(m.points.size()) - long(edges.size()) + long(m.faces.size());
 }
 
-/// The cut graph of a closed connected mesh through `tips`: the shortest
-/// paths from every tip to the first one (a shortest-path tree), plus, for
-/// genus g > 0, the 2g loops of a tree–cotree decomposition (the primal tree
-/// is the same shortest-path tree; each edge outside both trees closes a
-/// loop through the root), with the dangling branches that lead to no tip
-/// pruned. Cutting along it leaves one disk.
-inline std::set<Edge> cut_graph(const Mesh& m, const std::vector<int>& tips)
+/// The cut graph of a closed connected mesh through `tips`: a tree of
+/// shortest paths joining the tips (each tip, nearest first, by a shortest
+/// path to the tree of the previous ones), plus, for genus g > 0, the 2g
+/// loops of a tree–cotree decomposition (the primal tree extends the tips'
+/// tree by shortest paths to it; each edge outside both trees closes a loop
+/// through the first tip), with the branches that lead to no tip pruned.
+/// Cutting along it leaves one disk.
+///
+/// With `join_nearest` false, every tip goes to the first one by its own
+/// shortest path (one shortest-path tree, the primal tree as well): the
+/// branches then run side by side one edge apart before they merge, and
+/// every face between two such branches becomes a triangle with its three
+/// corners on the border, as seams drawn independently through the
+/// protrusions often do.
+inline std::set<Edge> cut_graph(const Mesh& m, const std::vector<int>& tips, bool join_nearest = true)
 {
   const auto adj = adjacency(m);
-  std::vector<double> d;
-  std::vector<int> parent;
   const int root = tips.empty() ? 0 : tips[0];
-  dijkstra(adj, { root }, d, parent);
+  std::vector<int> parent(m.points.size(), -1); // toward the root, in the primal tree
   std::set<Edge> cut, tree;
-  for(std::size_t v = 0; v < parent.size(); ++v)
+  std::vector<int> seam_vertices(1, root);
+  std::vector<char> joined(tips.size(), 0);
+  if(!tips.empty()) joined[0] = 1;
+  std::vector<double> dt;
+  std::vector<int> pt;
+  if(!join_nearest) {
+    dijkstra(adj, { root }, dt, parent);
+    for(int t : tips)
+      for(int v = t; parent[std::size_t(v)] >= 0; v = parent[std::size_t(v)]) cut.insert(edge(v, parent[std::size_t(v)]));
+  }
+  for(std::size_t added = 1; join_nearest && added < tips.size(); ++added) {
+    dijkstra(adj, seam_vertices, dt, pt);
+    std::size_t next = tips.size();
+    for(std::size_t k = 0; k < tips.size(); ++k)
+      if(!joined[k] && (next == tips.size() || dt[std::size_t(tips[k])] < dt[std::size_t(tips[next])])) next = k;
+    joined[next] = 1;
+    for(int v = tips[next]; pt[std::size_t(v)] >= 0; v = pt[std::size_t(v)]) {
+      parent[std::size_t(v)] = pt[std::size_t(v)];
+      cut.insert(edge(v, pt[std::size_t(v)]));
+      seam_vertices.push_back(v);
+    }
+  }
+  // The primal tree: the tips' tree, then shortest paths to it.
+  dijkstra(adj, seam_vertices, dt, pt);
+  for(std::size_t v = 0; v < parent.size(); ++v) {
+    if(parent[v] < 0) parent[v] = pt[v];
     if(parent[v] >= 0) tree.insert(edge(int(v), parent[v]));
+  }
   auto path_to_root = [&](int v) {
     for(; parent[std::size_t(v)] >= 0; v = parent[std::size_t(v)]) cut.insert(edge(v, parent[std::size_t(v)]));
   };
-  for(int t : tips) path_to_root(t);
   // Cotree: a spanning tree of the dual across the edges not in the tree.
   std::map<Edge, std::vector<int> > faces_of;
   for(std::size_t f = 0; f < m.faces.size(); ++f)
@@ -226,7 +257,6 @@ inline std::set<Edge> cut_graph(const Mesh& m, const std::vector<int>& tips)
         if(!seen[std::size_t(g)]) { seen[std::size_t(g)] = 1; cotree.insert(e); q.push(g); }
     }
   }
-  std::set<Edge> loops = cut;
   for(const auto& ef : faces_of)
     if(!tree.count(ef.first) && !cotree.count(ef.first)) {
       cut.insert(ef.first);
