@@ -50,7 +50,7 @@ disks=(
   "spiral-6-3:spiral 6 3"
   "maze-16-3:maze 16 3"
 )
-printf "%-16s %7s %6s %7s %-6s %-14s %5s %9s %4s %7s\n" disk faces border min_ang status stop it d_area inv seconds
+printf "%-19s %7s %6s %7s %-6s %-14s %5s %9s %4s %7s\n" disk faces border min_ang status stop it d_area inv seconds
 for d in "${disks[@]}"; do
   name="${d%%:*}"
   read -r -a how <<<"${d#*:}"
@@ -70,7 +70,7 @@ name, info, report, t0, t1 = sys.argv[1:6]
 i = json.load(open(info))
 r = json.load(open(report))
 f = r.get("final") or {}
-print("%-16s %7d %6d %7.2f %-6s %-14s %5d %9.4f %4s %7.2f" % (
+print("%-19s %7d %6d %7.2f %-6s %-14s %5d %9.4f %4s %7.2f" % (
     name, i["faces"], i["border_edges"], i["min_angle_degrees"], r["status"], r["stop_reason"], r["iterations"],
     f.get("d_area", float("nan")), r.get("caller_inverted_faces"), float(t1) - float(t0)))
 EOF

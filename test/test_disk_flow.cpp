@@ -901,7 +901,7 @@ INSTANTIATE_TEST_SUITE_P(DataSet, Scaling, ::testing::Values("nefertiti", "patch
 // Spaced by length, the Tutte start crushes faces by e⁵ and more, and the
 // flow crawled (D_area 2.16 after 500 iterations); it must converge,
 // certified, within 200.
-TEST(Cut_disk, CowCutThroughSixTips)
+TEST(Certified_cut_disk, CowCutThroughSixTips)
 {
   dlf_cut::Mesh closed;
   std::ifstream in(mesh_path("cow"));

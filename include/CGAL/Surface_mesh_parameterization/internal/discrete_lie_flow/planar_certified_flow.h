@@ -62,7 +62,7 @@ struct Planar_flow_settings
   /// hardly lowers E (steps halved down to 1e-15 on a spiral at D_area 2.12).
   double log_opening_least_gain = 1e-2;
   /// The Sobolev metric with its exact border block (border tangents couple
-  /// x and y: one factorisation of 2·interior + border dofs, with 4–9× the
+  /// x and y: one factorisation of 2·interior + border dofs, with 4–8× the
   /// fill of the split one) instead of the split metric's diagonal bound,
   /// from the start (`flow_disk()` sets it when the start's border spacing
   /// was far off) or for good once, above `newton_below`, D_area − 2 shrank
