@@ -11,6 +11,7 @@
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/area_elements.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/border_spacing.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/boundary_curve.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certification.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/density_levels.h>
@@ -168,8 +169,20 @@ Error_code flow_disk(Disk_problem& P, std::vector<Vec2>& uv, const Discrete_lie_
     Planar_paper_flow<EigenSolver> flow(P, uv, curve, opt, solver, Paper_flow_settings());
     out = run_flow(flow, opt);
   } else {
-    Planar_certified_flow<EigenSolver> flow(P, uv, curve, opt, solver, Planar_flow_settings());
+    // On the circle, when Tutte's map spaced by area (border_spacing.h) has
+    // less than half the caller's E, the border spacing by length was far
+    // off (a long seam, a thin disk): the flow starts from that map, and its
+    // metric takes the exact border block, for the border has far to slide.
+    // A fixed step asks for the flow from the caller's map as it is.
+    std::vector<double> u0;
+    signed_areas_2(uv, P.faces, u0);
+    const double E0 = Area_barrier_energy(P.target).value(u0);
+    Planar_flow_settings settings;
+    if(opt.fixed_step == 0 && curve.kind() == Discrete_lie_flow_border::CIRCLE)
+      settings.coupled_metric = respace_border_by_area<EigenSolver>(P, uv, curve, 0.5);
+    Planar_certified_flow<EigenSolver> flow(P, uv, curve, opt, solver, settings);
     out = run_flow(flow, opt);
+    out.initial_d_area = E0; // the caller's map
   }
   R.seconds_flow = std::chrono::duration<double>(Clock::now() - t0).count();
   // The fill counts here: a non-positive fill face would let a hole overlap the caller's faces.

@@ -58,6 +58,22 @@ struct Planar_flow_settings
   /// the Sobolev gradient of the log-ratio energy L (area_barrier_energy.h)
   /// and a step must lower L (Armijo) and not raise E.
   double log_opening_above = 2.1;
+  /// With the coupled metric, the opening ends for good after a step that
+  /// took off less than this fraction of D_area − 2: L's direction then
+  /// hardly lowers E (steps halved down to 1e-15 on a spiral at D_area 2.12).
+  double log_opening_least_gain = 1e-2;
+  /// The Sobolev metric with its exact border block (border tangents couple
+  /// x and y: one factorisation of 2·interior + border dofs, with 4–8× the
+  /// fill of the split one) instead of the split metric's diagonal bound,
+  /// from the start (`flow_disk()` sets it when the start's border spacing
+  /// was far off) or for good once, above `newton_below`, D_area − 2 shrank
+  /// by less than `coupled_when_slower` over `coupled_window` iterations
+  /// (0: never). The diagonal bound moves each border vertex on its own: a
+  /// border that must slide far and coherently (long seams) then crawls,
+  /// its steps halved by the line search.
+  bool coupled_metric = false;
+  double coupled_when_slower = 0.5;
+  std::size_t coupled_window = 10;
 };
 
 /// The planar certified flow as a policy of `run_flow()` (flow_driver.h).
@@ -75,13 +91,15 @@ public:
       m_sobolev(m_dofs.boundary_of, eigen_solver), m_newton_solver(m_newton_eigen_solver),
       m_newton_system(m_dofs.first, m_dofs.count, m_dofs.size), m_eps(settings.newton_regularization),
       m_basis(std::size_t(m_dofs.size)), m_tangent(uv.size()), m_around(0, std::vector<Face>()),
-      m_levels(P.xyz, caller_part(P.faces, P), caller_part(P.target, P)), m_caller_energy(caller_part(P.target, P))
+      m_levels(P.xyz, caller_part(P.faces, P), caller_part(P.target, P)), m_caller_energy(caller_part(P.target, P)),
+      m_coupled(settings.coupled_metric)
   {}
 
   bool start(Flow_outcome& out)
   {
     signed_areas_2(m_uv, m_P.faces, m_u);
     m_E = m_energy.value(m_u);
+    m_E_history.assign(1, m_E);
     out.initial_d_area = out.final_d_area = m_E;
     m_stopping.restart(m_E);
     return std::isfinite(m_E);
@@ -105,14 +123,19 @@ public:
   Direction_status direction(Flow_outcome& out)
   {
     const bool was_log_opening = m_log_opening;
-    m_log_opening = !m_newton && m_settings.log_opening_above > 0 && m_E > m_settings.log_opening_above;
+    m_log_opening = !m_newton && !m_opening_over && m_settings.log_opening_above > 0 && m_E > m_settings.log_opening_above;
     if(was_log_opening && !m_log_opening) m_lambda_prev = infinite_step(); // another direction, another scale
+    const std::size_t w = m_settings.coupled_window;
+    if(!m_coupled && !m_newton && m_settings.coupled_when_slower > 0 && m_E > m_settings.newton_below &&
+       m_E_history.size() > w && m_E - 2 > m_settings.coupled_when_slower * (m_E_history[m_E_history.size() - 1 - w] - 2))
+      m_coupled = true;
     gradient();
     if(!m_newton && m_settings.newton_below > 0 && m_E < m_settings.newton_below &&
        m_E - 2 > m_settings.newton_when_slower * (m_E_before - 2))
       m_newton = true;
     ++out.factorizations;
     if(m_newton) newton_direction(out);
+    else if(m_coupled) coupled_sobolev_direction(out);
     else sobolev_direction(out);
     m_slope = m_gr.dot(m_d);
     if(!(m_slope < 0)) { m_d = -m_gr; m_slope = -m_gr.squaredNorm(); }
@@ -153,9 +176,12 @@ public:
         m_curve.commit(std::size_t(m_dofs.boundary_of[v]), step.lambda * m_d[m_dofs.first[v]]);
     m_uv.swap(m_trial);
     m_u.swap(m_u_trial);
+    if(m_coupled && m_log_opening && m_E - m_E_trial < m_settings.log_opening_least_gain * (m_E - 2))
+      m_opening_over = true;
     m_E_before = m_E;
     m_E = m_E_trial;
     if(m_settings.relaxation_sweeps > 0 && m_E < m_settings.relaxation_below) relax(out);
+    m_E_history.push_back(m_E);
     m_lambda_prev = step.lambda;
     out.final_d_area = m_E;
   }
@@ -209,6 +235,22 @@ private:
       if(!solved) m_eps *= 10;
     }
     if(!solved) { out.solver_failed = true; m_d = -m_gr; }
+  }
+
+  /// d = −S⁻¹ g, S the Dirichlet energy of the current domain over the dofs
+  /// (exact border block), factorised by the Gauss–Newton tail's solver.
+  void coupled_sobolev_direction(Flow_outcome& out)
+  {
+    const Sparse_matrix* S;
+    {
+      Scoped_timer timer(out.seconds_assembly);
+      S = &m_newton_system.metric(m_uv, m_P.faces, m_basis);
+    }
+    Scoped_timer timer(out.seconds_solve);
+    if(!(m_newton_solver.factorize(*S) && m_newton_solver.solve(-m_gr, m_d))) {
+      out.solver_failed = true;
+      m_d = -m_gr;
+    }
   }
 
   /// d = −M⁻¹ g, M the Dirichlet energy of the current domain.
@@ -273,7 +315,7 @@ private:
   Pattern_reusing_solver<EigenSolver> m_newton_solver;
   Planar_gauss_newton_system m_newton_system;
   double m_eps;
-  bool m_newton = false, m_log_opening = false;
+  bool m_newton = false, m_log_opening = false, m_opening_over = false;
   double m_E = 0, m_E_trial = 0, m_L = 0, m_slope = 0;
   double m_E_before = infinite_step(); // E before the last step: how much it took off
   double m_lambda_prev = infinite_step();
@@ -284,6 +326,8 @@ private:
   std::vector<char> m_movable;
   const Density_levels m_levels;     // the caller's faces only
   const Area_barrier_energy m_caller_energy; // D_area of the caller's faces (holes)
+  bool m_coupled;
+  std::vector<double> m_E_history; // E after each iteration, from the start
 };
 
 /// Runs the certified flow from the positively oriented `uv` (modified in

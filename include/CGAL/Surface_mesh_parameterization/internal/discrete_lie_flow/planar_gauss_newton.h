@@ -57,8 +57,25 @@ public:
           }
       });
     });
+    const Sparse_matrix& S = metric(uv, faces, basis, &trace_S);
+    CGAL_assertion(S.nonZeros() == H.nonZeros()); // the same contributions' pattern
+    if(m_A.nonZeros() != H.nonZeros()) m_A = H;
+    const double eps = eps_relative * (trace_S > 0 ? trace_H / trace_S : 1);
+    const double *h = H.valuePtr(), *s = S.valuePtr();
+    double* a = m_A.valuePtr();
+    for(Eigen::Index k = 0; k < m_A.nonZeros(); ++k) a[k] = h[k] + eps * s[k];
+    return m_A;
+  }
+
+  /// The Sobolev metric S alone: the Dirichlet energy of the current domain
+  /// over the dofs, border tangents included (x and y coupled through them).
+  /// Same pattern as H + ε S, so one symbolic analysis serves both.
+  const Sparse_matrix& metric(const std::vector<Vec2>& uv, const std::vector<Face>& faces,
+                              const std::vector<Vec2>& basis, double* trace_S = nullptr)
+  {
+    double trace = 0;
     const Sparse_matrix& S = m_S.assemble(std::size_t(m_size), [&](auto&& add) {
-      trace_S = 0;
+      trace = 0;
       for_each_face(uv, faces, basis, [&](std::size_t t, int m, const Local& l) {
         // The face's Dirichlet stiffness between its corners: the half
         // cotangent of the opposite corner off the diagonal, the two
@@ -77,17 +94,12 @@ public:
             const Vec2& ej = l.e[std::size_t(j)];
             const double v = stiffness[l.corner[std::size_t(i)]][l.corner[std::size_t(j)]] * (ei[0] * ej[0] + ei[1] * ej[1]);
             add(l.dof[std::size_t(i)], l.dof[std::size_t(j)], v);
-            if(i == j) trace_S += v;
+            if(i == j) trace += v;
           }
       });
     });
-    CGAL_assertion(S.nonZeros() == H.nonZeros()); // the same contributions' pattern
-    if(m_A.nonZeros() != H.nonZeros()) m_A = H;
-    const double eps = eps_relative * (trace_S > 0 ? trace_H / trace_S : 1);
-    const double *h = H.valuePtr(), *s = S.valuePtr();
-    double* a = m_A.valuePtr();
-    for(Eigen::Index k = 0; k < m_A.nonZeros(); ++k) a[k] = h[k] + eps * s[k];
-    return m_A;
+    if(trace_S) *trace_S = trace;
+    return S;
   }
 
 private:

@@ -1,0 +1,201 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// A start for the certified flow on the circle: Tutte's map (uniform weights)
+// with the border vertices spaced by area instead of by length.
+//
+// Spacing by length gives a border arc the room its 3D length asks for, not
+// the area behind it. Where a disk is long and thin, or cut open along a
+// seam (the two sides of a leg's seam are long border arcs with little area
+// between them, a seam's junction encloses faces between border vertices
+// only), the Tutte map crushes faces by factors of e⁵ and more; the area of
+// a pocket closed by border vertices grows with the cube of their spacing,
+// and the flow then spends hundreds of iterations, each held at a fraction of
+// a critical root of ~1e-3, widening it. Here every border vertex owns the
+// faces nearest to it (geodesically, along edges); the arc of each vertex is
+// then scaled by (target share / domain share)^½ of what it owns, a few
+// times, each time re-solving Tutte's map with the factorisation of the
+// first (the matrix does not change). Tutte's map of a convex border is an
+// embedding; each candidate is still checked with the exact predicate.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_BORDER_SPACING_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_BORDER_SPACING_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/area_barrier_energy.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/area_elements.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/boundary_curve.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certification.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_problem.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sparse_solver.h>
+
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace dlf {
+
+/// For every vertex, the position in the boundary loop of the border vertex
+/// nearest to it along the edges of the 3D mesh (multi-source Dijkstra).
+inline std::vector<int> nearest_border_vertex(const Disk_problem& P)
+{
+  const std::size_t n = P.xyz.size();
+  std::vector<std::vector<std::pair<int, double> > > adj(n);
+  for(const Face& f : P.faces)
+    for(int k = 0; k < 3; ++k) {
+      const int a = f[k], b = f[(k + 1) % 3];
+      const Vec3 &p = P.xyz[std::size_t(a)], &q = P.xyz[std::size_t(b)];
+      const double l = std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+      adj[std::size_t(a)].emplace_back(b, l); // each interior edge twice (once per face): harmless
+      adj[std::size_t(b)].emplace_back(a, l);
+    }
+  std::vector<double> dist(n, std::numeric_limits<double>::infinity());
+  std::vector<int> owner(n, -1);
+  typedef std::pair<double, int> Item;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item> > q;
+  for(std::size_t k = 0; k < P.boundary.size(); ++k) {
+    dist[std::size_t(P.boundary[k])] = 0;
+    owner[std::size_t(P.boundary[k])] = int(k);
+    q.emplace(0., P.boundary[k]);
+  }
+  while(!q.empty()) {
+    const Item it = q.top();
+    q.pop();
+    if(it.first > dist[std::size_t(it.second)]) continue;
+    for(const auto& e : adj[std::size_t(it.second)]) {
+      const double d = it.first + e.second;
+      if(d < dist[std::size_t(e.first)]) {
+        dist[std::size_t(e.first)] = d;
+        owner[std::size_t(e.first)] = owner[std::size_t(it.second)];
+        q.emplace(d, e.first);
+      }
+    }
+  }
+  return owner;
+}
+
+/// Tutte's map of `P` with its border on the circle of `curve`, spaced by
+/// area (above). Replaces `uv` when one of the candidates is an embedding
+/// (exact predicate) whose barrier energy E is below `gain` times `uv`'s;
+/// returns whether it did. `uv` must be positively oriented with the
+/// boundary loop counter-clockwise on `curve`, which is then rebuilt for the
+/// new positions.
+template <class EigenSolver>
+bool respace_border_by_area(const Disk_problem& P, std::vector<Vec2>& uv, Boundary_curve& curve,
+                            double gain, std::size_t rounds = 8)
+{
+  const std::size_t n = uv.size(), nb = P.boundary.size();
+  if(curve.kind() != Discrete_lie_flow_border::CIRCLE || nb < 3) return false;
+  std::vector<int> interior(n, -1);
+  int ni = 0;
+  {
+    std::vector<char> on_border(n, 0);
+    for(int b : P.boundary) on_border[std::size_t(b)] = 1;
+    for(std::size_t v = 0; v < n; ++v)
+      if(!on_border[v]) interior[v] = ni++;
+  }
+  if(ni == 0) return false;
+  // Tutte's matrix over the interior (the number of neighbours on the
+  // diagonal) and the border's columns, from the edges of the faces.
+  std::vector<std::vector<int> > neighbours(n);
+  for(const Face& f : P.faces)
+    for(int k = 0; k < 3; ++k) {
+      const int a = f[k], b = f[(k + 1) % 3];
+      neighbours[std::size_t(a)].push_back(b);
+      neighbours[std::size_t(b)].push_back(a);
+    }
+  std::vector<Eigen::Triplet<double> > triplets;
+  for(std::size_t v = 0; v < n; ++v) {
+    if(interior[v] < 0) continue;
+    std::vector<int>& nv = neighbours[v];
+    std::sort(nv.begin(), nv.end());
+    nv.erase(std::unique(nv.begin(), nv.end()), nv.end());
+    triplets.emplace_back(interior[v], interior[v], double(nv.size()));
+    for(int w : nv)
+      if(interior[std::size_t(w)] >= 0) triplets.emplace_back(interior[v], interior[std::size_t(w)], -1.);
+  }
+  Sparse_matrix A(ni, ni);
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  EigenSolver solver;
+  solver.compute(A);
+  if(solver.info() != Eigen::Success) return false;
+
+  // What each border vertex owns: a third of each face per corner.
+  const std::vector<int> owner = nearest_border_vertex(P);
+  std::vector<double> target_share(nb, 0.);
+  double total_target = 0;
+  for(std::size_t t = 0; t < P.faces.size(); ++t) {
+    for(int k = 0; k < 3; ++k) target_share[std::size_t(owner[std::size_t(P.faces[t][k])])] += P.target[t] / 3;
+    total_target += P.target[t];
+  }
+  for(double& s : target_share) s /= total_target;
+
+  const Area_barrier_energy energy(P.target);
+  std::vector<double> u;
+  signed_areas_2(uv, P.faces, u);
+  double best_E = gain * energy.value(u);
+  std::vector<Vec2> best, candidate = uv;
+  const double L = curve.length(), s0 = curve.parameter(0);
+  // Arc owned by each border vertex, first in proportion to its target share.
+  std::vector<double> weight = target_share;
+  Eigen::MatrixXd rhs(ni, 2), x;
+  for(std::size_t round = 0; round < rounds; ++round) {
+    // Border vertex k at the middle of its arc: s_k = s0 + Σ_{j<k} weight_j + (weight_k − weight_0) / 2.
+    double sum = 0;
+    for(double w : weight) sum += w;
+    double s = 0;
+    for(std::size_t k = 0; k < nb; ++k) {
+      if(k > 0) s += 0.5 * (weight[k - 1] + weight[k]) / sum * L;
+      candidate[std::size_t(P.boundary[k])] = curve.point(s0 + s);
+    }
+    rhs.setZero();
+    for(std::size_t v = 0; v < n; ++v) {
+      if(interior[v] < 0) continue;
+      for(int w : neighbours[v])
+        if(interior[std::size_t(w)] < 0) {
+          rhs(interior[v], 0) += candidate[std::size_t(w)][0];
+          rhs(interior[v], 1) += candidate[std::size_t(w)][1];
+        }
+    }
+    x = solver.solve(rhs);
+    if(solver.info() != Eigen::Success || !x.allFinite()) break;
+    for(std::size_t v = 0; v < n; ++v)
+      if(interior[v] >= 0) candidate[v] = {{ x(interior[v], 0), x(interior[v], 1) }};
+    signed_areas_2(candidate, P.faces, u);
+    const double E = energy.value(u);
+    if(E < best_E && count_orientations_2(candidate, P.faces, true).all_positive()) {
+      best_E = E;
+      best = candidate;
+    }
+    if(!std::isfinite(E)) break;
+    // Scale each arc by the square root of its vertex's target over domain share.
+    std::vector<double> domain_share(nb, 0.);
+    double U = 0;
+    for(std::size_t t = 0; t < P.faces.size(); ++t) {
+      for(int k = 0; k < 3; ++k) domain_share[std::size_t(owner[std::size_t(P.faces[t][k])])] += u[t] / 3;
+      U += u[t];
+    }
+    for(std::size_t k = 0; k < nb; ++k) weight[k] *= std::sqrt(target_share[k] / (domain_share[k] / U));
+  }
+  if(best.empty()) return false;
+  uv.swap(best);
+  std::vector<Vec2> loop(nb);
+  for(std::size_t k = 0; k < nb; ++k) loop[k] = uv[std::size_t(P.boundary[k])];
+  curve = Boundary_curve(loop, Discrete_lie_flow_border::CIRCLE);
+  return true;
+}
+
+} // namespace dlf
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
