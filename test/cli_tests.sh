@@ -632,6 +632,10 @@ done
 cp "$MESHES/blob.off" blob.off
 printf '\n\n95 114 114 101 101 95\n' > ring.selection.txt
 expect_error "--seam: a seam loop cuts off a piece" 1 "found 2 connected components" disk blob.off --seam ring.selection.txt
+# A square has 4 corners; an ear away from one would be flattened: the error says so.
+OUTPUTS="-o out/o.obj" expect_error "--border square with more than 4 ears on the border: named" 2 \
+  "ERROR_BORDER_TOO_SHORT: .*the outer loop has [0-9]* ears, triangles with two border edges, at vertices [0-9]" \
+  disk "$MESHES/mech-holes-shark.off" --border square
 printf '\n\n0 99999\n' > s1.selection.txt
 expect_error "--seam: vertex out of range" 1 "line 3, pair 1 (0 99999): vertex 99999 does not exist (the mesh has 138 vertices)" disk blob.off --seam s1.selection.txt
 printf '\n\n95 114 0 1\n' > s2.selection.txt

@@ -207,6 +207,29 @@ void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh
   for(const std::string& w : written) out << "  wrote " << w << "\n";
 }
 
+// Why the square refused a border that is long enough: an ear (a triangle
+// with two border edges) must sit on a corner, or the square's side would
+// flatten it, and a square has four corners.
+std::string square_border_hint(const Disk_settings& s, const Disk_run& run, const Indexed_mesh& mesh,
+                               const std::vector<Border_loop>& loops)
+{
+  if(s.border != "square" || run.status != SMP::ERROR_BORDER_TOO_SHORT || loops.empty()) return "";
+  const std::vector<int>& outer = loops[std::size_t(s.outer_loop)].vertices;
+  if(outer.size() < 4) return " (the outer loop has " + std::to_string(outer.size()) + " vertices; a square needs 4)";
+  std::vector<int> faces_at(mesh.xyz.size(), 0);
+  for(const Triangle& t : mesh.faces)
+    for(int v : t) ++faces_at[std::size_t(v)];
+  std::vector<int> ears;
+  for(int v : outer)
+    if(faces_at[std::size_t(v)] == 1) ears.push_back(v);
+  if(ears.size() <= 4) return "";
+  std::string first;
+  for(std::size_t k = 0; k < ears.size() && k < 5; ++k) first += (k ? ", " : "") + std::to_string(ears[k]);
+  return " (the outer loop has " + std::to_string(ears.size()) + " ears, triangles with two border edges, at vertices " +
+         first + (ears.size() > 5 ? ", ..." : "") + ": each must be a corner of the square or its side would flatten it, "
+         "and a square has 4; use --border circle, the default)";
+}
+
 } // namespace
 
 int disk_command(const std::vector<std::string>& args)
@@ -308,7 +331,8 @@ int disk_command(const std::vector<std::string>& args)
                 << "%): the flow stopped (" << SMP::discrete_lie_flow_stop_reason_name(run.report.stop_reason) << ") after "
                 << run.report.iterations << " iterations; " << share_hint(run.report.stop_reason) << "\n";
   if(!ok)
-    throw Cli_error(s.input + ": " + SMP::discrete_lie_flow_error_name(run.status) + ": " + run.report.message,
+    throw Cli_error(s.input + ": " + SMP::discrete_lie_flow_error_name(run.status) + ": " + run.report.message +
+                      square_border_hint(s, run, mesh, loops),
                     is_input_error(run.status) ? EXIT_BAD_INPUT : EXIT_FLOW_ERROR);
   return exit_code_of_ok_run(run.report, true);
 }
