@@ -89,19 +89,7 @@ bool filled_disk_tutte(const Disk_problem& P, std::vector<Vec2>& uv)
     else if(a >= 0) { rhs(a, 0) += uv[std::size_t(e.second)][0]; rhs(a, 1) += uv[std::size_t(e.second)][1]; }
     else if(b >= 0) { rhs(b, 0) += uv[std::size_t(e.first)][0]; rhs(b, 1) += uv[std::size_t(e.first)][1]; }
   }
-  Sparse_matrix L(ni, ni);
-  L.setFromTriplets(trip.begin(), trip.end());
-  L.makeCompressed();
-  EigenSolver solver;
-  solver.compute(L);
-  if(solver.info() != Eigen::Success) return false;
-  for(int c = 0; c < 2; ++c) {
-    const Eigen::VectorXd x = solver.solve(Eigen::VectorXd(rhs.col(c)));
-    if(solver.info() != Eigen::Success || !x.allFinite()) return false;
-    for(std::size_t v = 0; v < n; ++v)
-      if(idx[v] >= 0) uv[v][std::size_t(c)] = x[idx[v]];
-  }
-  return true;
+  return solve_interior_2<EigenSolver>(ni, trip, rhs, idx, uv);
 }
 
 /// The caller's part of a list indexed by the faces of `P` (the fill's dropped).

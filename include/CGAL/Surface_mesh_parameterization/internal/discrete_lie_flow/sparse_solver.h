@@ -10,6 +10,7 @@
 
 #include <CGAL/assertions.h>
 
+#include <Eigen/Dense>
 #include <Eigen/Sparse>
 
 #include <algorithm>
@@ -125,6 +126,29 @@ private:
   std::vector<typename Sparse_matrix::StorageIndex> m_outer, m_inner;
   std::size_t m_analyses = 0;
 };
+
+/// The interior of a Tutte-like embedding: solves L x = rhs (both columns)
+/// for the unknowns numbered by `idx` (−1: a fixed vertex, left as it is in
+/// `uv`) and writes them into `uv`. False when the factorization or a solve
+/// fails or gives a non-finite value.
+template <class EigenSolver, class Point2>
+bool solve_interior_2(Eigen::Index unknowns, const std::vector<Eigen::Triplet<double> >& trip,
+                      const Eigen::MatrixXd& rhs, const std::vector<int>& idx, std::vector<Point2>& uv)
+{
+  Sparse_matrix L(unknowns, unknowns);
+  L.setFromTriplets(trip.begin(), trip.end());
+  L.makeCompressed();
+  EigenSolver solver;
+  solver.compute(L);
+  if(solver.info() != Eigen::Success) return false;
+  for(int c = 0; c < 2; ++c) {
+    const Eigen::VectorXd x = solver.solve(Eigen::VectorXd(rhs.col(c)));
+    if(solver.info() != Eigen::Success || !x.allFinite()) return false;
+    for(std::size_t v = 0; v < uv.size(); ++v)
+      if(idx[v] >= 0) uv[v][std::size_t(c)] = x[idx[v]];
+  }
+  return true;
+}
 
 } // namespace dlf
 } // namespace internal

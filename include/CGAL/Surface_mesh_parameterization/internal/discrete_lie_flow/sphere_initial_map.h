@@ -103,19 +103,7 @@ bool punctured_tutte(const Sphere_problem& P, int puncture, std::vector<Vec2>& u
       else if(a >= 0) { rhs(a, 0) += 0.5 * uv[std::size_t(j)][0]; rhs(a, 1) += 0.5 * uv[std::size_t(j)][1]; }
       else if(b >= 0) { rhs(b, 0) += 0.5 * uv[std::size_t(i)][0]; rhs(b, 1) += 0.5 * uv[std::size_t(i)][1]; }
     }
-  Sparse_matrix L(ni, ni);
-  L.setFromTriplets(trip.begin(), trip.end());
-  L.makeCompressed();
-  EigenSolver solver;
-  solver.compute(L);
-  if(solver.info() != Eigen::Success) return false;
-  for(int c = 0; c < 2; ++c) {
-    const Eigen::VectorXd x = solver.solve(Eigen::VectorXd(rhs.col(c)));
-    if(solver.info() != Eigen::Success || !x.allFinite()) return false;
-    for(std::size_t v = 0; v < n; ++v)
-      if(idx[v] >= 0) uv[v][c] = x[idx[v]];
-  }
-  return true;
+  return solve_interior_2<EigenSolver>(ni, trip, rhs, idx, uv);
 }
 
 /// Inverse stereographic projection of s·(z − centre), mirrored in y when
