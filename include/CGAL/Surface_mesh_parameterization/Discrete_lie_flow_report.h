@@ -39,9 +39,9 @@ struct Discrete_lie_flow_distortion
 /// What a run of the Discrete Lie Flow did, on the disk
 /// (`Discrete_lie_flow_parameterizer_3`) and on the sphere
 /// (`Discrete_lie_flow_sphere_parameterizer_3`): the same names for the same
-/// things; a field that only one of them fills says so. Shared by the copies
-/// of a parameterizer, so a named object passed by value to CGAL's
-/// `parameterize()` still sees the report of its last run.
+/// things; a field that only one of them fills says so. Each parameterizer
+/// object owns the report of its last run; CGAL's `parameterize()` called on
+/// a named `Discrete_lie_flow_parameterizer_3` runs that object, not a copy.
 struct Discrete_lie_flow_report
 {
   /// `OK`, or the error code that `parameterize()` returned.

@@ -89,7 +89,7 @@ public:
   /// \param solver_traits the sparse SPD solver
   explicit Discrete_lie_flow_sphere_parameterizer_3(const Discrete_lie_flow_options& options = Discrete_lie_flow_options(),
                                                     Solver_traits solver_traits = Solver_traits())
-    : m_options(options), m_solver_traits(solver_traits), m_report(std::make_shared<Discrete_lie_flow_report>())
+    : m_options(options), m_solver_traits(solver_traits)
   {}
 
   /// The flow settings, to read or change before `parameterize()`.
@@ -97,8 +97,8 @@ public:
   /// The flow settings.
   const Discrete_lie_flow_options& options() const { return m_options; }
 
-  /// The report of the last run (shared by all copies of this object).
-  const Discrete_lie_flow_report& report() const { return *m_report; }
+  /// The report of this object's last run (each copy owns its own).
+  const Discrete_lie_flow_report& report() const { return m_report; }
 
   /// Sets a per-face density ρ > 0 (a readable property map, `face_descriptor`
   /// → number): the sphere area of a face becomes proportional to ρ·area.
@@ -143,8 +143,8 @@ public:
     std::vector<face_descriptor> face_of;
     const Error_code code = parameterize(std::as_const(mesh), sphere_map, vertex_of, face_of);
     if(code == OK)
-      internal::dlf::store_area_elements(mesh, vertex_of, m_report->target_area, m_report->domain_area, face_of,
-                                         m_report->face_density);
+      internal::dlf::store_area_elements(mesh, vertex_of, m_report.target_area, m_report.domain_area, face_of,
+                                         m_report.face_density);
     return code;
   }
 
@@ -155,9 +155,9 @@ public:
   {
     std::size_t i = 0;
     for(vertex_descriptor v : vertices(mesh)) {
-      if(i >= m_report->target_area.size()) break;
-      put(target, v, m_report->target_area[i]);
-      put(domain, v, m_report->domain_area[i]);
+      if(i >= m_report.target_area.size()) break;
+      put(target, v, m_report.target_area[i]);
+      put(domain, v, m_report.domain_area[i]);
       ++i;
     }
   }
@@ -168,7 +168,7 @@ private:
                           std::vector<face_descriptor>& face_of)
   {
     namespace D = internal::dlf;
-    Discrete_lie_flow_report& R = *m_report;
+    Discrete_lie_flow_report& R = m_report;
     R = Discrete_lie_flow_report();
     if(faces(mesh).empty()) return D::report_failure(R, ERROR_EMPTY_MESH, "the mesh has no faces");
     // Index the vertices in iteration order, and gather the faces.
@@ -214,7 +214,7 @@ private:
   Solver_traits m_solver_traits;
   std::function<double(face_descriptor)> m_face_density;
   std::function<double(vertex_descriptor)> m_vertex_density;
-  std::shared_ptr<Discrete_lie_flow_report> m_report;
+  Discrete_lie_flow_report m_report;
 };
 
 /// \ingroup PkgDiscreteLieFlowParameterizers

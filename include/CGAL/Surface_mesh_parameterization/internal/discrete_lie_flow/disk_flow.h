@@ -114,6 +114,40 @@ inline Error_code report_verdict(const Flow_outcome& out, Discrete_lie_flow_repo
   return OK;
 }
 
+/// Orients `P` as the initial map `uv`: faces and border loop counter-clockwise
+/// in the domain. Fails, naming the first bad face, unless every face then
+/// has a positive area. `loop` receives the border positions in order.
+inline Error_code orient_to_initial_map(Disk_problem& P, const std::vector<Vec2>& uv, std::vector<Vec2>& loop,
+                                        Discrete_lie_flow_report& R)
+{
+  // Some border parameterizers run clockwise: the flow then works on the
+  // faces with their index order reversed.
+  Orientation_count oc = count_orientations_2(uv, P.faces);
+  if(oc.inverted * 2 > P.faces.size()) {
+    for(Face& f : P.faces) std::swap(f[1], f[2]);
+    oc = count_orientations_2(uv, P.faces);
+  }
+  if(!oc.all_positive()) {
+    const Face& f = P.faces[std::size_t(oc.first_bad)];
+    std::ostringstream s;
+    s << "the initial map has " << oc.inverted << " inverted and " << oc.degenerate
+      << " degenerate triangles; first: face " << oc.first_bad << " (vertices " << f[0] << ", " << f[1] << ", " << f[2] << ")";
+    return report_failure(R, ERROR_INITIAL_MAP_FOLDED, s.str());
+  }
+  loop.resize(P.boundary.size());
+  for(std::size_t k = 0; k < loop.size(); ++k) loop[k] = uv[std::size_t(P.boundary[k])];
+  double twice = 0;
+  for(std::size_t k = 0; k < loop.size(); ++k) {
+    const Vec2 &a = loop[k], &b = loop[(k + 1) % loop.size()];
+    twice += a[0] * b[1] - a[1] * b[0];
+  }
+  if(twice < 0) {
+    std::reverse(P.boundary.begin(), P.boundary.end());
+    std::reverse(loop.begin(), loop.end());
+  }
+  return OK;
+}
+
 /// The planar flow on index data: `uv` is an initial map of `P` with all
 /// faces positive or all negative (modified in place on success; the map
 /// keeps the initial orientation). Fills `R`.
@@ -132,31 +166,9 @@ Error_code flow_disk(Disk_problem& P, std::vector<Vec2>& uv, const Discrete_lie_
   if(holes && opt.mode == Discrete_lie_flow_mode::PAPER)
     return report_failure(R, ERROR_NO_TOPOLOGICAL_DISC, "the paper mode takes disks only (the mesh has " +
                           std::to_string(P.holes) + (P.holes == 1 ? " hole" : " holes") + "); the certified mode fills them");
-  // Some border parameterizers run clockwise: the flow then works on the
-  // faces with their index order reversed.
-  Orientation_count oc = count_orientations_2(uv, P.faces);
-  if(oc.inverted * 2 > P.faces.size()) {
-    for(Face& f : P.faces) std::swap(f[1], f[2]);
-    oc = count_orientations_2(uv, P.faces);
-  }
-  if(!oc.all_positive()) {
-    const Face& f = P.faces[std::size_t(oc.first_bad)];
-    std::ostringstream s;
-    s << "the initial map has " << oc.inverted << " inverted and " << oc.degenerate
-      << " degenerate triangles; first: face " << oc.first_bad << " (vertices " << f[0] << ", " << f[1] << ", " << f[2] << ")";
-    return report_failure(R, ERROR_INITIAL_MAP_FOLDED, s.str());
-  }
-  std::vector<Vec2> loop(P.boundary.size());
-  for(std::size_t k = 0; k < loop.size(); ++k) loop[k] = uv[std::size_t(P.boundary[k])];
-  double twice = 0;
-  for(std::size_t k = 0; k < loop.size(); ++k) {
-    const Vec2 &a = loop[k], &b = loop[(k + 1) % loop.size()];
-    twice += a[0] * b[1] - a[1] * b[0];
-  }
-  if(twice < 0) {
-    std::reverse(P.boundary.begin(), P.boundary.end());
-    std::reverse(loop.begin(), loop.end());
-  }
+  std::vector<Vec2> loop;
+  const Error_code oriented = orient_to_initial_map(P, uv, loop, R);
+  if(oriented != OK) return oriented;
   Boundary_curve curve(loop, opt.disk.border);
   R.border = curve.kind();
   const std::vector<Face> caller_faces = caller_part(P.faces, P);
