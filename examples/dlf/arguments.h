@@ -10,6 +10,7 @@
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 
 #include <boost/program_options/option.hpp>
+#include <boost/program_options/variables_map.hpp>
 
 #include <array>
 #include <ostream>
@@ -78,6 +79,15 @@ std::vector<std::string> glue_region_balls(const std::vector<std::string>& args)
 std::vector<Region_option> regions_in_order(const std::vector<boost::program_options::option>& ordered);
 
 /// True for the fixed-border initial maps (convex border: circle or square).
+/// The library's mode of a --mode value: certified, paper or literal.
+CGAL::Surface_mesh_parameterization::Discrete_lie_flow_mode mode_of(const std::string& mode);
+
+/// Refuses the options that another mode alone reads (--literal-targets,
+/// --no-flips: paper; --threshold: literal) and bad --threshold or
+/// --fixed-step values.
+void check_mode_options(const boost::program_options::variables_map& vm, const std::string& mode,
+                        const CGAL::Surface_mesh_parameterization::Discrete_lie_flow_options& options);
+
 inline bool has_fixed_border(const std::string& init) { return init == "tutte" || init == "mvc" || init == "dcp"; }
 
 } // namespace dlf_cli
