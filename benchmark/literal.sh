@@ -35,7 +35,7 @@ run() { # mesh-name faces border step(adaptive|X) dlf-args...
   rm -f "$tmp/r.json"
   local t0 t1
   t0=$(date +%s.%N)
-  "$DLF" disk "$@" -q --report "$tmp/r.json" >/dev/null 2>&1 || true
+  "$DLF" disk "$@" -q --history --report "$tmp/r.json" >/dev/null 2>&1 || true
   t1=$(date +%s.%N)
   python3 - "$name" "$faces" "$border" "$step" "$tmp/r.json" "$t0" "$t1" >> "$rows" <<'EOF'
 import json, sys
@@ -46,6 +46,10 @@ try:
     for k in ("status", "stop_reason", "iterations", "initial_domain_d_area", "domain_d_area",
               "collapse_faces", "caller_inverted_faces", "flowing_inverted_faces", "flips", "final_residual", "message"):
         row[k] = r.get(k)
+    # The lowest D_area along the run (the literal mode returns the last iterate).
+    h = [(x["d_area"], x["iteration"]) for x in r.get("history", [])] + [(r["initial_domain_d_area"], 0)]
+    row["best_d_area"], row["best_iteration"] = min(h)
+    row["steps"] = [x["step"] for x in r.get("history", [])][-3:]
 except Exception as e:
     row["status"] = "no-report"
 print(json.dumps(row))
@@ -84,15 +88,16 @@ out.append("Command: `benchmark/literal.sh` (`dlf disk MESH --mode literal --bor
            "‖h_M − h_Ω‖² < 1e-3; `c (k)`: collapsed after k accepted steps (the paper's `c`); "
            f"`>{cap}`: the cap.\n")
 out.append("### Adaptive step (Eq. 5, μ 0.8)\n")
-out.append("| mesh | faces | border | stop | iterations | D_area start → returned | collapse: folded faces | caller folds | seconds |")
-out.append("|---|---:|---|---|---:|---|---:|---:|---:|")
+out.append("| mesh | faces | border | stop | iterations | D_area start → returned | lowest D_area (iteration) | collapse: folded faces | last step | caller folds | seconds |")
+out.append("|---|---:|---|---|---:|---|---|---:|---:|---:|---:|")
 for r in rows:
     if r["step"] != "adaptive": continue
     if r.get("status") in (None, "no-report"):
-        out.append(f"| {r['mesh']} | {r['faces']:,} | {r['border']} | no report | | | | | |"); continue
+        out.append(f"| {r['mesh']} | {r['faces']:,} | {r['border']} | no report | | | | | | | |"); continue
     out.append(f"| {r['mesh']} | {r['faces']:,} | {r['border']} | {r['stop_reason']} | {r['iterations']} | "
-               f"{r['initial_domain_d_area']:.3f} → {r['domain_d_area']:.4g} | "
-               f"{r['collapse_faces'] if r['stop_reason'] == 'collapsed' else '-'} | {r['caller_inverted_faces']} | {r['seconds']:.1f} |")
+               f"{r['initial_domain_d_area']:.3f} → {r['domain_d_area']:.4g} | {r['best_d_area']:.3f} ({r['best_iteration']}) | "
+               f"{r['collapse_faces'] if r['stop_reason'] == 'collapsed' else '-'} | "
+               f"{(r['steps'][-1] if r['steps'] else 0):.2g} | {r['caller_inverted_faces']} | {r['seconds']:.1f} |")
 ad = [r for r in rows if r["step"] == "adaptive" and r.get("stop_reason")]
 conv = [r for r in ad if r["stop_reason"] == "converged"]
 coll = [r for r in ad if r["stop_reason"] == "collapsed"]
