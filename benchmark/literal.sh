@@ -35,11 +35,12 @@ run() { # mesh-name faces border step(adaptive|X) dlf-args...
   rm -f "$tmp/r.json"
   local t0 t1
   t0=$(date +%s.%N)
-  "$DLF" disk "$@" -q --history --report "$tmp/r.json" >/dev/null 2>&1 || true
+  rm -f "$tmp/d.obj"
+  "$DLF" disk "$@" -q --history --report "$tmp/r.json" --domain-mesh "$tmp/d.obj" >/dev/null 2>&1 || true
   t1=$(date +%s.%N)
-  python3 - "$name" "$faces" "$border" "$step" "$tmp/r.json" "$t0" "$t1" >> "$rows" <<'EOF'
-import json, sys
-name, faces, border, step, path, t0, t1 = sys.argv[1:8]
+  python3 - "$name" "$faces" "$border" "$step" "$tmp/r.json" "$t0" "$t1" "$1" "$tmp/d.obj" >> "$rows" <<'EOF'
+import json, math, sys
+name, faces, border, step, path, t0, t1, off, dobj = sys.argv[1:10]
 row = {"mesh": name, "faces": int(faces), "border": border, "step": step, "seconds": float(t1) - float(t0)}
 try:
     r = json.load(open(path))
@@ -50,6 +51,29 @@ try:
     h = [(x["d_area"], x["iteration"]) for x in r.get("history", [])] + [(r["initial_domain_d_area"], 0)]
     row["best_d_area"], row["best_iteration"] = min(h)
     row["steps"] = [x["step"] for x in r.get("history", [])][-3:]
+    # Algorithm 1's ‖h_M − h_Ω‖² of the returned map (doc/paper_errata.md,
+    # "Stop rule"): h_M lumped on the input faces, h_Ω on the flowing ones.
+    tok = [l.split("#")[0].split() for l in open(off)]
+    tok = [t for t in tok if t]
+    nv, nf = int(tok[1][0]), int(tok[1][1])
+    xyz = [list(map(float, t[:3])) for t in tok[2:2 + nv]]
+    hM, hO = [0.0] * nv, [0.0] * nv
+    for t in tok[2 + nv:2 + nv + nf]:
+        a, b, c = (xyz[int(k)] for k in t[1:4])
+        u = [b[i] - a[i] for i in range(3)]; w = [c[i] - a[i] for i in range(3)]
+        x = (u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0])
+        ar = 0.5 * math.sqrt(sum(q * q for q in x))
+        for k in t[1:4]: hM[int(k)] += ar / 3
+    vt = [list(map(float, l.split()[1:3])) for l in open(dobj) if l.startswith("vt ")]
+    for l in open(dobj):
+        if not l.startswith("f "): continue
+        ids = [int(c.split("/")[0]) - 1 for c in l.split()[1:4]]
+        tv = [int(c.split("/")[1]) - 1 for c in l.split()[1:4]]
+        p, q, s_ = (vt[k] for k in tv)
+        ar = 0.5 * ((q[0] - p[0]) * (s_[1] - p[1]) - (q[1] - p[1]) * (s_[0] - p[0]))
+        for k in ids: hO[k] += ar / 3
+    SM, SO = sum(hM), sum(hO)
+    row["mismatch"] = nv * sum((o / SO - m / SM) ** 2 for o, m in zip(hO, hM))
 except Exception as e:
     row["status"] = "no-report"
 print(json.dumps(row))
@@ -88,14 +112,14 @@ out.append("Command: `benchmark/literal.sh` (`dlf disk MESH --mode literal --bor
            "‖h_M − h_Ω‖² < 1e-3; `c (k)`: collapsed after k accepted steps (the paper's `c`); "
            f"`>{cap}`: the cap.\n")
 out.append("### Adaptive step (Eq. 5, μ 0.8)\n")
-out.append("| mesh | faces | border | stop | iterations | D_area start → returned | lowest D_area (iteration) | collapse: folded faces | last step | caller folds | seconds |")
-out.append("|---|---:|---|---|---:|---|---|---:|---:|---:|---:|")
+out.append("| mesh | faces | border | stop | iterations | D_area start → returned | lowest D_area (iteration) | ‖h_M − h_Ω‖² returned | collapse: folded faces | last step | caller folds | seconds |")
+out.append("|---|---:|---|---|---:|---|---|---:|---:|---:|---:|---:|")
 for r in rows:
     if r["step"] != "adaptive": continue
     if r.get("status") in (None, "no-report"):
-        out.append(f"| {r['mesh']} | {r['faces']:,} | {r['border']} | no report | | | | | | | |"); continue
+        out.append(f"| {r['mesh']} | {r['faces']:,} | {r['border']} | no report | | | | | | | | |"); continue
     out.append(f"| {r['mesh']} | {r['faces']:,} | {r['border']} | {r['stop_reason']} | {r['iterations']} | "
-               f"{r['initial_domain_d_area']:.3f} → {r['domain_d_area']:.4g} | {r['best_d_area']:.3f} ({r['best_iteration']}) | "
+               f"{r['initial_domain_d_area']:.3f} → {r['domain_d_area']:.4g} | {r['best_d_area']:.3f} ({r['best_iteration']}) | {r.get('mismatch', float('nan')):.2g} | "
                f"{r['collapse_faces'] if r['stop_reason'] == 'collapsed' else '-'} | "
                f"{(r['steps'][-1] if r['steps'] else 0):.2g} | {r['caller_inverted_faces']} | {r['seconds']:.1f} |")
 ad = [r for r in rows if r["step"] == "adaptive" and r.get("stop_reason")]

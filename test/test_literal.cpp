@@ -151,7 +151,7 @@ TEST(Literal, FirstStepByHand)
     SO += area[t]; SM += P.target[t];
   }
   // Step 4: Δg = h_M − h_Ω with Δ = −L, L the cotangent stiffness built from the angles.
-  Eigen::MatrixXd L = Eigen::MatrixXd::Zero(Eigen::Index(n), Eigen::Index(n));
+  Eigen::MatrixXd L = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
   for(const Face& f : P.faces)
     for(int k = 0; k < 3; ++k) {
       const int i = f[k], j = f[(k + 1) % 3], o = f[(k + 2) % 3];
@@ -160,7 +160,7 @@ TEST(Literal, FirstStepByHand)
       const double w = 0.5 / std::tan(angle);
       L(i, j) -= w; L(j, i) -= w; L(i, i) += w; L(j, j) += w;
     }
-  Eigen::VectorXd rhs(Eigen::Index(n));
+  Eigen::VectorXd rhs(static_cast<Eigen::Index>(n));
   for(std::size_t i = 0; i < n; ++i) rhs[Eigen::Index(i)] = hO[i] - hM[i] * SO / SM;
   // Neumann problem: pin g_0 = 0 (any constant; the gradient ignores it).
   const Eigen::VectorXd g_red = L.bottomRightCorner(Eigen::Index(n - 1), Eigen::Index(n - 1))

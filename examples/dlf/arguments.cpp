@@ -250,6 +250,10 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
     ("init", po::value<std::string>(&s.init)->value_name("I")->default_value("tutte"),
      "initial map: tutte, mvc (mean value), dcp (discrete conformal) with a circle or square border; "
      "lscm, arap with a free border")
+    ("init-uv", po::value<std::string>(&s.init_uv_file)->value_name("MAP.obj"),
+     "the caller's own initial map instead of --init: an OBJ of the input with one vt (or a flat v) per "
+     "vertex, flip-free; any domain, convex or not (the paper's Fig. 10): the border slides along its polygon "
+     "(--border free)")
     ("border", po::value<std::string>(&s.border)->value_name("B"),
      "circle or square (tutte, mvc, dcp; default circle), or free: the border slides along the initial "
      "map's border (the only choice, and the default, for lscm and arap)")
@@ -326,6 +330,14 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
 
   require_one_of("mode", s.mode, { "certified", "paper", "literal" });
   require_one_of("init", s.init, { "tutte", "mvc", "dcp", "lscm", "arap" });
+  if(!s.init_uv_file.empty()) {
+    if(!vm["init"].defaulted()) throw Cli_error("--init-uv and --init exclude each other");
+    if(!s.seam.empty()) throw Cli_error("--init-uv applies to meshes without --seam");
+    if(!s.border.empty() && s.border != "free")
+      throw Cli_error("--init-uv keeps the map's own border: --border free only");
+    s.init = "uv";
+    s.border = "free";
+  }
   if(s.border.empty()) s.border = has_fixed_border(s.init) ? "circle" : "free";
   require_one_of("border", s.border, { "circle", "square", "free" });
   if(!has_fixed_border(s.init) && s.border != "free")

@@ -44,8 +44,10 @@ struct Disk_settings
   std::string texture_obj;                      ///< `--texture`: NAME.obj, with NAME.mtl and NAME.png
   int texture_size = 1024;                      ///< `--texture-size`: pixels a side
   bool history_in_report = false;               ///< `--history`
-  std::string mode = "certified";               ///< certified | paper
-  std::string init = "tutte";                   ///< tutte | mvc | dcp | lscm | arap
+  std::string mode = "certified";               ///< certified | paper | literal
+  std::string init = "tutte";                   ///< tutte | mvc | dcp | lscm | arap | uv (`--init-uv`)
+  std::string init_uv_file;                     ///< `--init-uv`: the caller's initial map (OBJ)
+  std::vector<std::array<double, 2> > init_uv;  ///< its uv per input vertex, once read
   std::string border;                           ///< circle | square | free (resolved from init if not given)
   std::string density_file;                     ///< `--density`: one value per face or per vertex
   std::vector<Region_option> regions;           ///< `--roi` / `--roi-ball`, in command-line order

@@ -267,6 +267,7 @@ int disk_command(const std::vector<std::string>& args)
   if(loops.size() > 1 && s.mode != "certified")
     throw Cli_error("--mode " + s.mode + " takes disks only: " + s.input + " has " + std::to_string(loops.size() - 1) +
                     (loops.size() == 2 ? " hole" : " holes") + " (the certified mode, the default, fills them for the flow)");
+  if(!s.init_uv_file.empty()) s.init_uv = read_uv_obj(s.init_uv_file, input.xyz.size());
   Density_setup density = make_density(input, s);
   s.options.face_density = density.face_density; // faces in input order, as Surface_mesh keeps them
 
