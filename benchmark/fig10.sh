@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The paper's Fig. 10: DLF on a non-convex domain. An L-shaped grid (the
 # square [0, 2]² less its upper right quarter, 16 cells a unit) lifted by a
-# bump z = 0.6 exp(−|p − (0.5, 0.5)|² / 0.08) is mapped from its own flat
+# bump z = 1.5 exp(−|p − (0.5, 0.5)|² / 0.08) is mapped from its own flat
 # projection (`--init-uv`, a flip-free map onto the L) in the three modes,
 # the border sliding along the L. Writes doc/images/fig10_MODE.svg and
 # prints one line per mode (stop reason, iterations, D_area, folds).
@@ -32,7 +32,7 @@ for j in range(2 * n):
         if not all(k in idx for k in c) or (i + 0.5) / n > 1 and (j + 0.5) / n > 1: continue
         a, b, cc, d = (idx[k] for k in c)
         faces += [(a, b, cc), (a, cc, d)] if (i + j) % 2 == 0 else [(a, b, d), (b, cc, d)]
-z = lambda x, y: 0.6 * math.exp(-((x - 0.5) ** 2 + (y - 0.5) ** 2) / 0.08)
+z = lambda x, y: 1.5 * math.exp(-((x - 0.5) ** 2 + (y - 0.5) ** 2) / 0.08)
 with open(sys.argv[1], "w") as f:
     f.write(f"OFF\n{len(pts)} {len(faces)} 0\n")
     for x, y in pts: f.write(f"{x} {y} {z(x, y)}\n")
@@ -42,9 +42,12 @@ with open(sys.argv[2], "w") as f:
     for t in faces: f.write("f %d/%d %d/%d %d/%d\n" % (t[0] + 1, t[0] + 1, t[1] + 1, t[1] + 1, t[2] + 1, t[2] + 1))
 EOF
 mkdir -p doc/images
+root="$(pwd)"
+dlf="$(cd "$(dirname "$DLF")" && pwd)/$(basename "$DLF")"
 for mode in certified paper literal; do
-  "$DLF" disk "$tmp/L.off" --init-uv "$tmp/L_uv.obj" --mode "$mode" -q --svg "doc/images/fig10_$mode.svg" \
-    --report "$tmp/$mode.json" 2>/dev/null || true
+  # Run where the mesh is, so that the picture's caption names no machine path.
+  (cd "$tmp" && "$dlf" disk L.off --init-uv L_uv.obj --mode "$mode" -q --svg "$root/doc/images/fig10_$mode.svg" \
+    --report "$mode.json" 2>/dev/null) || true
   python3 - "$tmp/$mode.json" "$mode" <<'EOF'
 import json, sys
 r = json.load(open(sys.argv[1]))
