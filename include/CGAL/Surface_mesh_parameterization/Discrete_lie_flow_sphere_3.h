@@ -56,8 +56,9 @@ namespace Surface_mesh_parameterization {
 /// re-normalised and every accepted step certified exactly. The result is
 /// never folded: every face of the caller's mesh keeps det[p, q, r] > 0.
 ///
-/// Paper mode (`Discrete_lie_flow_mode::PAPER`, the reference) runs the
-/// paper's flow from the same initial map: Delaunay edge flips of the flowing
+/// Paper mode (`Discrete_lie_flow_mode::PAPER`) runs the paper's flow,
+/// stabilised (a plateau test, a stall detector, the best iterate), from the
+/// same initial map: Delaunay edge flips of the flowing
 /// spherical triangulation before each Poisson solve, the tangential part of
 /// the potential's gradient, the same cubic step, every step certified on the
 /// flowing triangulation. Its result may fold the caller's triangles; the
