@@ -45,15 +45,21 @@ namespace Surface_mesh_parameterization {
 ///
 /// The class `Discrete_lie_flow_parameterizer_3` computes an area-preserving
 /// (or density-prescribed) parameterization of a disk-topology triangle mesh
-/// by the Discrete Lie Flow of Su, Li, Zhao, Lei and Gu (\ref DLFBibSu2019 "Su et al. 2019"): starting from any flip-free
+/// by the Discrete Lie Flow of Kehua Su, Chencheng Li, Shifan Zhao, Na Lei and
+/// Xianfeng Gu, "Discrete Lie flow: A measure controllable parameterization
+/// method", Computer Aided Geometric Design 72 (2019) 49–68
+/// (\ref DLFBibSu2019 "Su et al. 2019"): starting from any flip-free
 /// initial map, the domain vertices flow until every triangle's domain area
 /// is proportional to its (density-weighted) surface area, with the step
 /// bounded by the closed-form critical roots and certified by CGAL's exact
 /// orientation predicate.
 ///
-/// Two modes (`Discrete_lie_flow_options::mode`): `CERTIFIED` (default) keeps
-/// the caller's connectivity and never folds it; `PAPER` follows the paper,
-/// flipping edges of the flowing domain mesh.
+/// Three modes (`Discrete_lie_flow_options::mode`): `CERTIFIED` (default)
+/// keeps the caller's connectivity and never folds it; `LITERAL` runs the
+/// paper's Algorithm 1 as printed (doc/paper_literal.md; its failure, a
+/// collapse, is reported as the stop reason `COLLAPSED`); `PAPER` is that
+/// flow stabilised (doc/paper_mode.md). Both flip edges of the flowing
+/// domain mesh. Where the printed paper is corrected: doc/paper_errata.md.
 ///
 /// Meshes with holes (a connected genus-0 component with several border
 /// loops, certified mode): the loop of `bhd` goes to the domain's border

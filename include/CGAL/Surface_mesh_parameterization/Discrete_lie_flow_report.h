@@ -71,6 +71,10 @@ struct Discrete_lie_flow_report
   /// The certified triangulation's (the flowing one in paper mode; with
   /// holes, the caller's faces and the fill of the holes): always 0 on success.
   std::size_t flowing_inverted_faces = 0;
+  /// Literal mode, stop reason `COLLAPSED`: the faces of the flowing
+  /// triangulation that the refused step inverted or made degenerate (exact
+  /// predicate); 0 when the step no longer moved the mesh.
+  std::size_t collapse_faces = 0;
   std::size_t rejected_by_exact_check = 0; ///< trial steps the doubles accepted and the exact predicate refused
   std::size_t factorizations = 0;          ///< numeric factorisations of the flow's sparse matrices
   std::size_t symbolic_analyses = 0;       ///< symbolic analyses (a new sparsity pattern)

@@ -36,7 +36,10 @@ namespace Surface_mesh_parameterization {
 /// \ingroup PkgDiscreteLieFlowParameterizers
 ///
 /// Area-preserving (or density-prescribed) map of a closed genus-0 triangle
-/// mesh onto the unit sphere by the Discrete Lie Flow on the sphere.
+/// mesh onto the unit sphere by the Discrete Lie Flow on the sphere (Kehua
+/// Su, Chencheng Li, Shifan Zhao, Na Lei and Xianfeng Gu, "Discrete Lie flow:
+/// A measure controllable parameterization method", Computer Aided Geometric
+/// Design 72 (2019) 49–68; \ref DLFBibSu2019 "Su et al. 2019").
 ///
 /// The initial map punctures one face, embeds the remaining disk by Tutte's
 /// barycentric map with the punctured triangle as a convex border, and lifts
@@ -53,12 +56,17 @@ namespace Surface_mesh_parameterization {
 /// re-normalised and every accepted step certified exactly. The result is
 /// never folded: every face of the caller's mesh keeps det[p, q, r] > 0.
 ///
-/// Paper mode (`Discrete_lie_flow_mode::PAPER`, the reference) runs the
-/// paper's flow from the same initial map: Delaunay edge flips of the flowing
+/// Paper mode (`Discrete_lie_flow_mode::PAPER`) runs the paper's flow,
+/// stabilised (a plateau test, a stall detector, the best iterate), from the
+/// same initial map: Delaunay edge flips of the flowing
 /// spherical triangulation before each Poisson solve, the tangential part of
 /// the potential's gradient, the same cubic step, every step certified on the
 /// flowing triangulation. Its result may fold the caller's triangles; the
-/// report counts them and holds the flowing triangulation.
+/// report counts them and holds the flowing triangulation. Literal mode
+/// (`Discrete_lie_flow_mode::LITERAL`) runs Algorithm 1 as printed from the
+/// same start: the step μ·min λ̃ or a fixed step, no safeguards, the stop
+/// rule ‖h_M − h_Ω‖² < ε, a collapse reported as the stop reason
+/// `COLLAPSED` (doc/paper_literal.md, doc/paper_errata.md).
 ///
 /// \tparam TriangleMesh_ a model of `FaceGraph` (closed, connected, genus 0, triangles)
 /// \tparam SolverTraits_ `CGAL::Eigen_solver_traits<S>` with `S` an Eigen

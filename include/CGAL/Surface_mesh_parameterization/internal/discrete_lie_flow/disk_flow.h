@@ -19,6 +19,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_problem.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/distortion.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow_driver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/literal_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/planar_certified_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/planar_paper_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/solver_threads.h>
@@ -75,6 +76,7 @@ inline void report_outcome(Flow_outcome& out, Discrete_lie_flow_report& R)
   R.final_residual = out.final_residual;
   R.flips = out.flips;
   R.rejected_by_exact_check = out.rejected_by_exact_check;
+  R.collapse_faces = out.collapse_faces;
   R.factorizations = out.factorizations;
   R.symbolic_analyses = out.symbolic_analyses;
   R.seconds_assembly = out.seconds_assembly;
@@ -105,6 +107,14 @@ inline Error_code report_verdict(const Flow_outcome& out, Discrete_lie_flow_repo
   R.status = OK;
   if(out.stop_reason == Discrete_lie_flow_stop_reason::CONVERGED) {
     R.message = "Success";
+  } else if(out.stop_reason == Discrete_lie_flow_stop_reason::COLLAPSED) {
+    // The literal mode's documented failure (the paper's "c").
+    std::ostringstream s;
+    s << std::setprecision(6) << "collapsed: the step of iteration " << out.iterations + 1 << " "
+      << (out.collapse_faces > 0 ? "folds or degenerates " + std::to_string(out.collapse_faces) + " faces of the flowing mesh"
+                                 : std::string("no longer moves the mesh (or runs a border vertex off its side)"))
+      << "; the last fold-free iterate is returned, d_area " << out.final_d_area;
+    R.message = s.str();
   } else {
     std::ostringstream s;
     s << std::setprecision(6) << "not converged: a valid, fold-free map, stopped (" << discrete_lie_flow_stop_reason_name(out.stop_reason)
@@ -163,8 +173,9 @@ Error_code flow_disk(Disk_problem& P, std::vector<Vec2>& uv, const Discrete_lie_
   R.vertices = P.caller_vertices();
   R.faces = P.caller_faces();
   R.holes = P.holes;
-  if(holes && opt.mode == Discrete_lie_flow_mode::PAPER)
-    return report_failure(R, ERROR_NO_TOPOLOGICAL_DISC, "the paper mode takes disks only (the mesh has " +
+  if(holes && opt.mode != Discrete_lie_flow_mode::CERTIFIED)
+    return report_failure(R, ERROR_NO_TOPOLOGICAL_DISC, std::string("the ") + discrete_lie_flow_mode_name(opt.mode) +
+                          " mode takes disks only (the mesh has " +
                           std::to_string(P.holes) + (P.holes == 1 ? " hole" : " holes") + "); the certified mode fills them");
   std::vector<Vec2> loop;
   const Error_code oriented = orient_to_initial_map(P, uv, loop, R);
@@ -179,6 +190,9 @@ Error_code flow_disk(Disk_problem& P, std::vector<Vec2>& uv, const Discrete_lie_
   Flow_outcome out;
   if(opt.mode == Discrete_lie_flow_mode::PAPER) {
     Planar_paper_flow<EigenSolver> flow(P, uv, curve, opt, solver, Paper_flow_settings());
+    out = run_flow(flow, opt);
+  } else if(opt.mode == Discrete_lie_flow_mode::LITERAL) {
+    Planar_literal_flow<EigenSolver> flow(P, uv, curve, opt, solver);
     out = run_flow(flow, opt);
   } else {
     // On the circle, when Tutte's map spaced by area (border_spacing.h) has
