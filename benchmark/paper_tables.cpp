@@ -372,8 +372,6 @@ static int run_checks(const std::vector<std::pair<std::string, SM> >& meshes, do
   for(std::size_t i = 0; i < R.cell_area.size(); ++i) err = (std::max)(err, std::abs(R.cell_area[i] - nu[i]) / nu[i]);
   expect(R.converged && err < 1e-7, "random masses: converged in " + std::to_string(R.newton_iterations) +
                                       " Newton steps, max relative cell-area error " + fmt(err));
-  // The transport is optimal: the map's cost is below that of the identity
-  // coupling's obvious competitor, the same cells with the points permuted.
   for(const auto& named : meshes) {
     const SM& mesh = named.second;
     const Indexed idx = indexed(mesh);
