@@ -386,7 +386,9 @@ bool parse_score_arguments(const std::vector<std::string>& args, Score_settings&
   if(vm.count("help")) {
     std::cout << "Usage: dlf score [MESH] PARAM.obj [--report R.json]\n\n"
                  "Distortion metrics (d_area, arap, symmetric Dirichlet, log area ratio, inverted and\n"
-                 "degenerate faces, smallest angle) of the map of MESH's triangles given by PARAM.obj:\n"
+                 "degenerate faces, smallest angle, the paper's Table 1 'Wasserstein distance' and\n"
+                 "Area_total of the faces' area shares, Beltrami coefficient |mu|) of the map of MESH's\n"
+                 "triangles given by PARAM.obj:\n"
                  "its 'vt' lines, one per MESH vertex in order (as 'dlf disk' writes them), or, without\n"
                  "'vt', the x and y of its 'v' lines when all z are 0. When its faces 'f a/p b/q c/r'\n"
                  "name other 'vt' than their 'v' (per-corner uv: a map with seams, as 'dlf disk --seam'\n"

@@ -33,6 +33,31 @@ struct Discrete_lie_flow_distortion
   std::size_t degenerate_faces = 0; ///< exactly zero domain area; left out of the sums
   double min_angle_degrees = 0;     ///< smallest angle of a domain triangle
   std::size_t faces_below_1_degree = 0; ///< domain triangles with an angle below 1°
+  /// The paper's Table 1 "Wasserstein distance": `√Σ_t (S_t − Ŝ_t)²`, with
+  /// `S_t` and `Ŝ_t` the shares of face t in the (density-weighted) input area
+  /// and in the unsigned domain area (doc/design.md, "Metrics").
+  double wasserstein_table1 = 0;
+  double area_total = 0;            ///< `Σ_t |S_t − Ŝ_t|`, the reading of Table 5's Area_total in doc/design.md
+  double beltrami_mean = 0;         ///< mean over faces of |μ|, the Beltrami coefficient of the map input → domain
+  double beltrami_weighted_mean = 0; ///< `Σ w_t |μ_t|`
+  double beltrami_max = 0;          ///< largest |μ_t| (above 1 on inverted faces)
+};
+
+/// \ingroup PkgDiscreteLieFlowOptions
+/// How far apart two planar maps `a` and `b` of the same triangles are
+/// (`discrete_lie_flow_map_difference()`; doc/design.md, "Metrics"): the
+/// paper's comparison of DLF with optimal transport (its Table 6 and
+/// Figs. 17–18).
+struct Discrete_lie_flow_map_difference
+{
+  /// `√(Σ_i m_i |b_i − a_i|²)`, `m_i` the vertex's share of the
+  /// (density-weighted) input area lumped at vertices: the transport cost
+  /// of moving the measure `a` carries to `b` vertex by vertex.
+  double transport_cost = 0;
+  double beltrami_mean = 0;          ///< mean over faces of |μ| of ψ = b ∘ a⁻¹ (affine per face)
+  double beltrami_weighted_mean = 0; ///< the same weighted by the faces' shares of the input area
+  double beltrami_max = 0;           ///< largest |μ| of ψ
+  std::size_t faces_not_compared = 0; ///< faces degenerate in `a` or `b` (no Beltrami coefficient)
 };
 
 /// \ingroup PkgDiscreteLieFlowOptions
