@@ -232,8 +232,10 @@ int main(int argc, char** argv)
     dlf_benchmark::subdivide(mesh, spec);
     const std::string stem = (std::filesystem::path(work) / spec_text).string();
     const std::string off = stem + ".off", obj = stem + ".obj", report = stem + ".json";
-    if(!floor_only && !std::filesystem::exists(off) &&
-       !CGAL::IO::write_polygon_mesh(off, mesh, CGAL::parameters::stream_precision(17))) {
+    // A mesh already there (from an earlier run) is used and kept; one
+    // written here is removed once measured, as are the outputs.
+    const bool written = !floor_only && !std::filesystem::exists(off);
+    if(written && !CGAL::IO::write_polygon_mesh(off, mesh, CGAL::parameters::stream_precision(17))) {
       std::cerr << "large_meshes: cannot write " << off << "\n";
       return 2;
     }
@@ -247,6 +249,10 @@ int main(int argc, char** argv)
       std::ifstream in(report);
       if(in) R = nlohmann::json::parse(in, nullptr, false);
     }
+    std::error_code ignored;
+    std::filesystem::remove(obj, ignored);
+    std::filesystem::remove(report, ignored);
+    if(written) std::filesystem::remove(off, ignored);
     const Floor f = measure_floor(mesh);
     mesh.clear();
     double per_iteration = 0, setup = 0;

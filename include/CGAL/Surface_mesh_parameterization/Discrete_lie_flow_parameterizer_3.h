@@ -190,6 +190,9 @@ public:
     if(code != OK) return code;
     m_shared->vertex_of = vertex_of;
 
+    // The solver's threads for the initial map too (Tutte's factorization
+    // is as large as a flow step's); flow_disk() keeps them.
+    const D::Scoped_blas_threads threads(m_options.solver_threads, vertex_of.size());
     const Clock::time_point t0 = Clock::now();
     code = m_initial->parameterize(mesh, bhd, uvmap, vimap, vpmap);
     R.seconds_initial = std::chrono::duration<double>(Clock::now() - t0).count();
