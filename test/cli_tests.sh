@@ -474,6 +474,17 @@ expect_error "closed mesh (not a disk)" 1 "0 border loops" disk "$MESHES/sphere.
 expect_error "torus (not a disk)" 1 "genus 1" disk "$MESHES/pipe.off"
 expect_error "non-triangle faces" 1 "not triangles" disk "$MESHES/quad.off"
 expect_error "genus 3 with holes" 1 "106 border loops, genus 3" disk "$MESHES/elephant-with-holes.off"
+# Two triangles joined at one vertex (a bow tie): one face each side, but two fans at the vertex.
+printf 'OFF\n5 2 0\n0 0 0\n1 0 0\n0 1 0\n-1 0 0\n0 -1 0\n3 0 1 2\n3 0 3 4\n' > bowtie_disk.off
+expect_error "two fans at a vertex (not manifold)" 1 "not manifold" disk bowtie_disk.off
+# A hexagon fan, once plain, once with signs, exponents, comments, colours
+# and one face reversed (oriented on reading): the same map.
+printf 'OFF\n7 6 0\n0 0 0\n1 0 0\n0.5 0.866 0\n-0.5 0.866 0\n-1 0 0\n-0.5 -0.866 0\n0.5 -0.866 0\n3 0 1 2\n3 0 2 3\n3 0 3 4\n3 0 4 5\n3 0 5 6\n3 0 6 1\n' > hexagon.off
+printf 'OFF # a comment\n7 6 0\n+0 -0 0.0e0\n1 0 0 # x\n+0.5 0.866 0\n-0.5 8.66e-1 0\n-1 0 +0\n-0.5 -0.866 0\n0.5 -0.866 0 1 1 1\n3 0 1 2\n3 0 2 3 255 0 0\n3 0 4 3\n3 0 4 5\n3 0 5 6\n3 0 6 1\n' > hexagon_noisy.off
+"$DLF" disk hexagon.off -o hexagon.obj -q
+"$DLF" disk hexagon_noisy.off -o hexagon_noisy.obj -q
+check "OFF numbers with signs, exponents, comments and colours, a reversed face: the plain file's map" \
+  equals "$(grep -c '^vt ' hexagon_noisy.obj) $(grep '^vt ' hexagon.obj | md5sum)" "7 $(grep '^vt ' hexagon_noisy.obj | md5sum)"
 expect_error "--outer-loop out of range" 1 "has 3 border loops (0 to 2" disk "$MESHES/head.off" --outer-loop 3
 expect_error "--outer-loop negative" 1 "--outer-loop must be >= 0" disk "$MESHES/head.off" --outer-loop -1
 expect_error "--init-uv with --init" 1 "--init-uv and --init exclude each other" disk "$NEF" --init-uv nef.obj --init mvc

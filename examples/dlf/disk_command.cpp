@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
@@ -111,9 +112,22 @@ json seam_json(const Disk_settings& s, const Seam_cut& cut)
   return j;
 }
 
+// The command's own time around the library's run: reading the input,
+// checking its topology (and preparing a density), writing the -o map.
+struct Io_seconds
+{
+  double read = 0, check = 0, write = 0;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
 json make_report(const Disk_settings& s, const Indexed_mesh& input, const Seam_cut& cut,
                  const std::vector<Border_loop>& loops, const Disk_run& run,
-                 const Metrics* initial, const Metrics* final_metrics, const Density_setup& density, double picture_seconds)
+                 const Metrics* initial, const Metrics* final_metrics, const Density_setup& density, double picture_seconds,
+                 const Io_seconds& io)
 {
   const SMP::Discrete_lie_flow_report& R = run.report;
   json j;
@@ -124,7 +138,8 @@ json make_report(const Disk_settings& s, const Indexed_mesh& input, const Seam_c
   j["faces"] = input.faces.size();
   j["iterations"] = R.iterations;
   j["stop_reason"] = SMP::discrete_lie_flow_stop_reason_name(R.stop_reason);
-  j["seconds"] = { { "initial", R.seconds_initial }, { "flow", R.seconds_flow }, { "total", run.seconds },
+  j["seconds"] = { { "read", io.read }, { "check", io.check }, { "initial", R.seconds_initial },
+                   { "flow", R.seconds_flow }, { "total", run.seconds }, { "write", io.write },
                    { "pictures", picture_seconds } };
   j["initial"] = initial ? metrics_to_json(*initial) : json(nullptr);
   j["final"] = final_metrics ? metrics_to_json(*final_metrics) : json(nullptr);
@@ -246,7 +261,11 @@ int disk_command(const std::vector<std::string>& args)
   declare_pictures(outputs, s);
   if(!s.report.empty()) outputs.declare(s.report, "--report");
 
+  Io_seconds io;
+  auto t0 = std::chrono::steady_clock::now();
   const Indexed_mesh input = read_triangle_mesh(s.input);
+  io.read = seconds_since(t0);
+  t0 = std::chrono::steady_clock::now();
   // With seams, the flow maps the input cut open (one vertex per seam side),
   // which must pass the check of an uncut input; densities and regions are
   // the input's (faces keep their order).
@@ -270,6 +289,7 @@ int disk_command(const std::vector<std::string>& args)
   if(!s.init_uv_file.empty()) s.init_uv = read_uv_obj(s.init_uv_file, input.xyz.size());
   Density_setup density = make_density(input, s);
   s.options.face_density = density.face_density; // faces in input order, as Surface_mesh keeps them
+  io.check = seconds_since(t0);
 
   Progress progress(s.verbosity, s.mode != "certified");
   s.options.callback = progress.callback();
@@ -298,10 +318,12 @@ int disk_command(const std::vector<std::string>& args)
             << ", border " << used_border(run, s) << (s.seam.empty() ? "" : ", seams " + s.seam) << ", d_area "
             << final_metrics.d_area;
     // v and f are the input's; with seams, vt are per side and f a/p b/q c/r.
+    t0 = std::chrono::steady_clock::now();
     if(!s.output.empty())
       outputs.write(s.output, [&](std::ostream& o) {
         write_uv_obj(o, input.xyz, run.final_uv, input.faces, mesh.faces, comment.str());
       });
+    io.write = seconds_since(t0);
     if(!s.domain_mesh.empty()) {
       // Certified mode keeps the input triangulation; its faces are written
       // in input order (the report lists them in the library's walk order).
@@ -320,7 +342,7 @@ int disk_command(const std::vector<std::string>& args)
   if(!s.report.empty()) {
     double picture_seconds = 0;
     for(const auto& p : picture_timings) picture_seconds += p.second;
-    const json report = make_report(s, input, cut, loops, run, initial_ptr, final_ptr, density, picture_seconds);
+    const json report = make_report(s, input, cut, loops, run, initial_ptr, final_ptr, density, picture_seconds, io);
     outputs.write(s.report, [&](std::ostream& o) { o << report.dump(2) << '\n'; });
   }
   outputs.commit();

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -175,21 +176,31 @@ private:
   }
 
   // The numbers of the next line that is neither blank nor a comment, up to
-  // a '#' or the first token that is not a number.
+  // a '#' or the first token that is not a number (as `istream >> double`
+  // reads them: an optional sign, no "inf" or "nan"; a number out of the
+  // range of double ends the line too).
   bool line(std::vector<double>& values)
   {
     skip_blanks_and_comments();
     if(m_pos >= m_text.size()) return false;
     const std::size_t end = (std::min)(m_text.find('\n', m_pos), m_text.size());
-    std::string l = m_text.substr(m_pos, end - m_pos);
+    const char* p = m_text.data() + m_pos;
+    const char* const stop = m_text.data() + end;
     m_pos = end;
-    l = l.substr(0, l.find('#'));
-    std::istringstream in(l);
-    in.imbue(std::locale::classic());
     values.clear();
-    double x;
-    while(in >> x) values.push_back(x);
-    return true;
+    for(;;) {
+      while(p < stop && (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\v' || *p == '\f')) ++p;
+      if(p == stop || *p == '#') return true;
+      const char* q = p;
+      if(*q == '+' || *q == '-') ++q;
+      // Only digits or a point may start the magnitude: from_chars would take "inf" and "nan".
+      if(q == stop || !(std::isdigit(static_cast<unsigned char>(*q)) || *q == '.')) return true;
+      double x = 0;
+      const std::from_chars_result r = std::from_chars(q, stop, x);
+      if(r.ec != std::errc()) return true;
+      values.push_back(*p == '-' ? -x : x);
+      p = r.ptr;
+    }
   }
 
   bool read_binary(const std::string& path, bool dimensional, std::vector<Point_3>& points,
@@ -234,8 +245,73 @@ private:
 bool read_off_soup(const std::string& path, std::vector<Point_3>& points, std::vector<Polygon>& polygons)
 {
   std::ifstream in(path, std::ios::binary);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string text;
+  // One read of the whole file when its size is known (a regular file),
+  // else character by character (a pipe).
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  in.seekg(0, std::ios::beg);
+  if(size > 0 && in) {
+    text.resize(std::size_t(size));
+    in.read(&text[0], std::streamsize(size));
+    text.resize(std::size_t(in.gcount()));
+  } else {
+    in.clear();
+    in.seekg(0, std::ios::beg);
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
   return Off_text_reader(text).read(path, points, polygons);
+}
+
+// Whether a soup of triangles (each of 3 distinct vertices) is a
+// consistently oriented manifold mesh: no directed edge used twice, and the
+// faces around each vertex form one fan. The same test as CGAL's
+// is_polygon_soup_a_polygon_mesh(), by sorting instead of trees of pairs
+// (a few seconds at millions of faces); false sends the soup to CGAL's
+// orientation, which decides.
+bool is_oriented_manifold(std::size_t n, const std::vector<Polygon>& triangles)
+{
+  std::vector<std::uint64_t> directed;
+  directed.reserve(3 * triangles.size());
+  for(const Polygon& t : triangles)
+    for(int k = 0; k < 3; ++k) directed.push_back((std::uint64_t(t[std::size_t(k)]) << 32) | std::uint64_t(t[std::size_t((k + 1) % 3)]));
+  std::sort(directed.begin(), directed.end());
+  if(std::adjacent_find(directed.begin(), directed.end()) != directed.end()) return false;
+  std::vector<std::uint64_t>().swap(directed);
+  // Around vertex v, face (v, a, b) links a to b; with no directed edge
+  // twice, the links form paths and cycles, and one fan is one of them.
+  std::vector<std::size_t> first(n + 1, 0);
+  for(const Polygon& t : triangles)
+    for(std::size_t v : t) ++first[v + 1];
+  for(std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
+  std::vector<std::pair<std::size_t, std::size_t> > link(first[n]);
+  std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+  for(const Polygon& t : triangles)
+    for(std::size_t k = 0; k < 3; ++k) link[fill[t[k]]++] = { t[(k + 1) % 3], t[(k + 2) % 3] };
+  std::vector<char> seen;
+  for(std::size_t v = 0; v < n; ++v) {
+    const std::size_t b = first[v], e = first[v + 1];
+    if(e - b < 2) continue;
+    // Start at the link whose start no other link ends at (a border fan), else anywhere (a closed one).
+    std::size_t start = b;
+    for(std::size_t i = b; i < e; ++i) {
+      bool continues = false;
+      for(std::size_t j = b; j < e && !continues; ++j) continues = link[j].second == link[i].first;
+      if(!continues) { start = i; break; }
+    }
+    seen.assign(e - b, 0);
+    std::size_t walked = 0;
+    for(std::size_t i = start; i != e && !seen[i - b]; ) {
+      seen[i - b] = 1;
+      ++walked;
+      std::size_t next = e;
+      for(std::size_t j = b; j < e; ++j)
+        if(link[j].first == link[i].second) { next = j; break; }
+      i = next;
+    }
+    if(walked != e - b) return false;
+  }
+  return true;
 }
 
 // A tiny union-find over vertex indices, for counting connected components.
@@ -278,7 +354,7 @@ Indexed_mesh read_triangle_mesh(const std::string& path)
   check_triangles(polygons, path);
   check_referenced(points.size(), polygons, path);
 
-  if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons)) {
+  if(!is_oriented_manifold(points.size(), polygons)) {
     // Only an inconsistently oriented file gets here; orienting flips some
     // faces but keeps the order, unless it must duplicate non-manifold
     // vertices, which would renumber.
@@ -297,28 +373,61 @@ Indexed_mesh read_triangle_mesh(const std::string& path)
   return mesh;
 }
 
+namespace {
+
+// An edge as one sortable key: `a` in the high half, `b` in the low one.
+std::uint64_t edge_key(int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); }
+int key_first(std::uint64_t k) { return int(k >> 32); }
+int key_second(std::uint64_t k) { return int(k & 0xffffffffu); }
+
+} // namespace
+
 std::vector<Border_loop> border_loops(const std::vector<Vec3>& xyz, const std::vector<Triangle>& faces)
 {
-  // Undirected edges used by one face; on a manifold border every border
-  // vertex has two border neighbours, and the loops are walked from their
-  // smallest vertex index.
-  std::map<std::pair<int, int>, int> uses;
+  // Undirected edges used by one face (sorted keys rather than a tree of
+  // pairs: millions of faces); on a manifold border every border vertex has
+  // two border neighbours, and the loops are walked from their smallest
+  // vertex index.
+  std::vector<std::uint64_t> undirected;
+  undirected.reserve(3 * faces.size());
   for(const Triangle& t : faces)
-    for(int k = 0; k < 3; ++k) ++uses[std::minmax(t[k], t[(k + 1) % 3])];
-  std::map<int, std::vector<int> > around;
-  for(const auto& e : uses)
-    if(e.second == 1) { around[e.first.first].push_back(e.first.second); around[e.first.second].push_back(e.first.first); }
+    for(int k = 0; k < 3; ++k) {
+      const std::pair<int, int> e = std::minmax(t[k], t[(k + 1) % 3]);
+      undirected.push_back(edge_key(e.first, e.second));
+    }
+  std::sort(undirected.begin(), undirected.end());
+  // Both directions of each border edge, grouped by vertex (stable: the
+  // neighbours of a vertex keep the order of the sorted edges).
+  std::vector<std::pair<int, int> > around;
+  for(std::size_t i = 0; i < undirected.size(); ) {
+    std::size_t j = i;
+    while(j < undirected.size() && undirected[j] == undirected[i]) ++j;
+    if(j - i == 1) {
+      around.emplace_back(key_first(undirected[i]), key_second(undirected[i]));
+      around.emplace_back(key_second(undirected[i]), key_first(undirected[i]));
+    }
+    i = j;
+  }
+  std::vector<std::uint64_t>().swap(undirected);
+  std::stable_sort(around.begin(), around.end(),
+                   [](const std::pair<int, int>& x, const std::pair<int, int>& y) { return x.first < y.first; });
+  std::vector<std::size_t> first(xyz.size() + 1, 0); // around[first[v] .. first[v + 1]) are v's
+  for(const auto& e : around) ++first[std::size_t(e.first) + 1];
+  for(std::size_t v = 0; v < xyz.size(); ++v) first[v + 1] += first[v];
   std::vector<Border_loop> loops;
-  std::map<int, bool> walked;
-  for(const auto& start : around) {
-    if(walked[start.first]) continue;
+  std::vector<char> walked(xyz.size(), 0);
+  for(std::size_t e0 = 0; e0 < around.size(); e0 = first[std::size_t(around[e0].first) + 1]) {
+    const int start = around[e0].first;
+    if(walked[std::size_t(start)]) continue;
     Border_loop loop;
-    for(int previous = -1, v = start.first; v >= 0 && !walked[v]; ) {
-      walked[v] = true;
+    for(int previous = -1, v = start; v >= 0 && !walked[std::size_t(v)]; ) {
+      walked[std::size_t(v)] = 1;
       loop.vertices.push_back(v);
       int next = -1;
-      for(int w : around[v])
-        if(w != previous && !walked[w]) { next = w; break; }
+      for(std::size_t e = first[std::size_t(v)]; e < first[std::size_t(v) + 1]; ++e) {
+        const int w = around[e].second;
+        if(w != previous && !walked[std::size_t(w)]) { next = w; break; }
+      }
       previous = v;
       v = next;
     }
@@ -337,12 +446,18 @@ std::vector<Border_loop> check_disk_topology(const Indexed_mesh& mesh, const std
 {
   const std::size_t V = mesh.xyz.size(), F = mesh.faces.size();
   // Directed edges; a border edge is one whose reverse is absent.
-  std::map<std::pair<int, int>, int> directed;
+  std::vector<std::uint64_t> directed;
+  directed.reserve(3 * F);
   for(const Triangle& t : mesh.faces)
-    for(int k = 0; k < 3; ++k) directed[{ t[k], t[(k + 1) % 3] }] = 1;
+    for(int k = 0; k < 3; ++k) directed.push_back(edge_key(t[k], t[(k + 1) % 3]));
+  std::sort(directed.begin(), directed.end());
+  directed.erase(std::unique(directed.begin(), directed.end()), directed.end());
   std::size_t E = 0;
-  for(const auto& e : directed)
-    if(directed.count({ e.first.second, e.first.first }) == 0 || e.first.first < e.first.second) ++E;
+  for(std::uint64_t e : directed) {
+    const int a = key_first(e), b = key_second(e);
+    if(a < b || !std::binary_search(directed.begin(), directed.end(), edge_key(b, a))) ++E;
+  }
+  std::vector<std::uint64_t>().swap(directed);
   std::vector<Border_loop> loops = border_loops(mesh.xyz, mesh.faces);
   Union_find uf(V);
   for(const Triangle& t : mesh.faces) { uf.unite(std::size_t(t[0]), std::size_t(t[1])); uf.unite(std::size_t(t[1]), std::size_t(t[2])); }

@@ -280,13 +280,15 @@ struct Discrete_lie_flow_options
   /// can be given with `set_face_density()` / `set_vertex_density()` instead.
   std::vector<double> face_density;
   /// Threads of the BLAS under the sparse solver (OpenBLAS, as CHOLMOD's
-  /// supernodal factorization uses it) during the flow: 0 chooses (one below
-  /// 500,000 vertices, where more gain nothing measurable and spinning
-  /// threads lose much on a busy machine; the BLAS's own setting above), a
-  /// positive number sets it, a negative one leaves the BLAS alone. The
-  /// previous setting is restored after the run; OPENBLAS_NUM_THREADS,
-  /// GOTO_NUM_THREADS, OMP_NUM_THREADS or OMP_THREAD_LIMIT in the
-  /// environment override it (doc/design.md, "Solver threads").
+  /// supernodal factorization uses it) during the parameterization (initial
+  /// map and flow): 0 chooses (one below 500,000 vertices, where more gain
+  /// nothing measurable and spinning threads lose much on a busy machine;
+  /// the BLAS's own setting above; and OpenMP's dynamic adjustment, which
+  /// holds CHOLMOD's own loops to the idle cores), a positive number sets
+  /// it, a negative one leaves the BLAS alone. The previous setting is
+  /// restored after the run; OPENBLAS_NUM_THREADS, GOTO_NUM_THREADS,
+  /// OMP_NUM_THREADS or OMP_THREAD_LIMIT in the environment override it
+  /// (doc/design.md, "Solver threads").
   int solver_threads = 0;
   /// Keep the per-iteration history in the report.
   bool record_history = false;

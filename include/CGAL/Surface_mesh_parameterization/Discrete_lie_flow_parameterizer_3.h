@@ -21,6 +21,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/kernel_traits.h>
 
 #include <CGAL/Default.h>
+#include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Eigen_solver_traits.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -28,8 +29,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
-#include <set>
 #include <chrono>
 #include <functional>
 #include <memory>
@@ -200,6 +199,9 @@ public:
     if(code != OK) return code;
     m_vertex_of = vertex_of;
 
+    // The solver's threads for the initial map too (Tutte's factorization
+    // is as large as a flow step's); flow_disk() keeps them.
+    const D::Scoped_blas_threads threads(m_options.solver_threads, vertex_of.size());
     const Clock::time_point t0 = Clock::now();
     code = m_initial.parameterize(mesh, bhd, uvmap, vimap, vpmap);
     R.seconds_initial = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -256,7 +258,7 @@ private:
   // The component of `bhd` in index form: positions, faces, targets, and
   // the holes filled (see `disk_holes.h`).
   template <typename VertexIndexMap>
-  Error_code gather(const Triangle_mesh& mesh, halfedge_descriptor bhd, VertexIndexMap vimap,
+  Error_code gather(Triangle_mesh& mesh, halfedge_descriptor bhd, VertexIndexMap vimap,
                     internal::dlf::Disk_problem& P, std::vector<vertex_descriptor>& vertex_of,
                     std::vector<face_descriptor>& face_of)
   {
@@ -267,16 +269,19 @@ private:
   }
 
   template <typename VertexIndexMap>
-  Error_code gather_component(const Triangle_mesh& mesh, halfedge_descriptor bhd, VertexIndexMap vimap,
+  Error_code gather_component(Triangle_mesh& mesh, halfedge_descriptor bhd, VertexIndexMap vimap,
                               internal::dlf::Disk_problem& P, std::vector<vertex_descriptor>& vertex_of,
                               std::vector<face_descriptor>& face_of)
   {
     namespace D = internal::dlf;
     Discrete_lie_flow_report& R = m_report;
     auto fail = [&R](int code, const std::string& msg) { return D::report_failure(R, code, msg); };
-    // Faces of the component, by a walk across non-border edges.
+    // Faces of the component, by a walk across non-border edges. Dynamic
+    // property maps, not trees of descriptors: millions of faces.
+    auto seen = get(CGAL::dynamic_face_property_t<bool>(), mesh);
+    for(face_descriptor f : faces(mesh)) put(seen, f, false);
     std::vector<face_descriptor> stack(1, face(opposite(bhd, mesh), mesh));
-    std::set<face_descriptor> seen(stack.begin(), stack.end());
+    put(seen, stack.back(), true);
     while(!stack.empty()) {
       const face_descriptor f = stack.back();
       stack.pop_back();
@@ -284,16 +289,21 @@ private:
         const halfedge_descriptor o = opposite(h, mesh);
         if(is_border(o, mesh)) continue;
         const face_descriptor g = face(o, mesh);
-        if(seen.insert(g).second) stack.push_back(g);
+        if(!get(seen, g)) { put(seen, g, true); stack.push_back(g); }
       }
     }
     // In the order of faces(mesh), so that domain faces follow the input.
     for(face_descriptor f : faces(mesh))
-      if(seen.count(f)) face_of.push_back(f);
-    std::set<vertex_descriptor> vs;
+      if(get(seen, f)) face_of.push_back(f);
+    auto in_component = get(CGAL::dynamic_vertex_property_t<bool>(), mesh);
+    for(vertex_descriptor v : vertices(mesh)) put(in_component, v, false);
+    std::vector<vertex_descriptor> vs;
     for(std::size_t k = 0; k < face_of.size(); ++k) {
       std::size_t corners = 0;
-      for(vertex_descriptor v : vertices_around_face(halfedge(face_of[k], mesh), mesh)) { vs.insert(v); ++corners; }
+      for(vertex_descriptor v : vertices_around_face(halfedge(face_of[k], mesh), mesh)) {
+        if(!get(in_component, v)) { put(in_component, v, true); vs.push_back(v); }
+        ++corners;
+      }
       if(corners != 3)
         return fail(ERROR_NON_TRIANGULAR_MESH, "face " + face_name(mesh, vimap, face_of[k]) + " has " + std::to_string(corners) + " vertices");
     }
@@ -326,19 +336,19 @@ private:
 
   // Targets: ρ_f · area_M(f); options.face_density follows faces(mesh).
   template <typename VertexIndexMap>
-  Error_code gather_targets(const Triangle_mesh& mesh, VertexIndexMap vimap, internal::dlf::Disk_problem& P,
+  Error_code gather_targets(Triangle_mesh& mesh, VertexIndexMap vimap, internal::dlf::Disk_problem& P,
                             const std::vector<vertex_descriptor>& vertex_of, const std::vector<face_descriptor>& face_of)
   {
     namespace D = internal::dlf;
     Discrete_lie_flow_report& R = m_report;
     auto fail = [&R](int code, const std::string& msg) { return D::report_failure(R, code, msg); };
-
-    std::map<face_descriptor, std::size_t> position;
+    auto position = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
     if(!m_face_density && !m_vertex_density && !m_options.face_density.empty()) {
-      for(face_descriptor f : faces(mesh)) position.emplace(f, position.size());
-      if(m_options.face_density.size() != position.size())
+      std::size_t count = 0;
+      for(face_descriptor f : faces(mesh)) put(position, f, count++);
+      if(m_options.face_density.size() != count)
         return fail(Error_code(ERROR_INVALID_DENSITY), "the density has " + std::to_string(m_options.face_density.size()) +
-                    " values for " + std::to_string(position.size()) + " faces");
+                    " values for " + std::to_string(count) + " faces");
     }
     P.target.resize(P.faces.size());
     for(std::size_t f = 0; f < P.faces.size(); ++f) {
@@ -357,7 +367,7 @@ private:
           rho += r / 3;
         }
       }
-      else if(!m_options.face_density.empty()) rho = m_options.face_density[position[face_of[f]]];
+      else if(!m_options.face_density.empty()) rho = m_options.face_density[get(position, face_of[f])];
       if(!(rho > 0) || !std::isfinite(rho))
         return fail(Error_code(ERROR_INVALID_DENSITY), "the density of face " + face_name(mesh, vimap, face_of[f]) + " is " + std::to_string(rho));
       P.target[f] = rho * a;
@@ -368,7 +378,7 @@ private:
   // The border loops, bhd's first: the outer loop becomes `P.boundary`,
   // the topology is checked, and every other loop is filled.
   template <typename VertexIndexMap>
-  Error_code gather_loops(const Triangle_mesh& mesh, halfedge_descriptor bhd, VertexIndexMap vimap,
+  Error_code gather_loops(Triangle_mesh& mesh, halfedge_descriptor bhd, VertexIndexMap vimap,
                           internal::dlf::Disk_problem& P, const std::vector<face_descriptor>& face_of)
   {
     namespace D = internal::dlf;
@@ -376,17 +386,19 @@ private:
     auto fail = [&R](int code, const std::string& msg) { return D::report_failure(R, code, msg); };
     const std::size_t n = P.xyz.size();
     std::vector<std::vector<halfedge_descriptor> > loops(1);
-    for(halfedge_descriptor h : halfedges_around_face(bhd, mesh)) loops[0].push_back(h);
-    std::set<halfedge_descriptor> walked(loops[0].begin(), loops[0].end());
+    auto walked = get(CGAL::dynamic_halfedge_property_t<bool>(), mesh);
+    for(halfedge_descriptor h : halfedges(mesh)) put(walked, h, false);
+    for(halfedge_descriptor h : halfedges_around_face(bhd, mesh)) { loops[0].push_back(h); put(walked, h, true); }
     std::size_t border_edges = 0;
     for(face_descriptor f : face_of)
       for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh)) {
         const halfedge_descriptor o = opposite(h, mesh);
         if(!is_border(o, mesh)) continue;
         ++border_edges;
-        if(!walked.insert(o).second) continue;
+        if(get(walked, o)) continue;
+        put(walked, o, true);
         loops.emplace_back(1, o);
-        for(halfedge_descriptor b = next(o, mesh); b != o; b = next(b, mesh)) { loops.back().push_back(b); walked.insert(b); }
+        for(halfedge_descriptor b = next(o, mesh); b != o; b = next(b, mesh)) { loops.back().push_back(b); put(walked, b, true); }
       }
     for(halfedge_descriptor h : loops[0]) P.boundary.push_back(int(get(vimap, target(h, mesh))));
     if(P.boundary.size() < 3) return fail(ERROR_BORDER_TOO_SHORT, "the border has fewer than 3 vertices");
@@ -416,15 +428,15 @@ private:
           return fail(ERROR_NO_TOPOLOGICAL_DISC, "vertex " + std::to_string(v) + " lies twice on the border loops "
                       "(a pinched border); a disk with holes needs them disjoint");
       }
-    std::map<face_descriptor, std::size_t> index_of;
-    for(std::size_t k = 0; k < face_of.size(); ++k) index_of.emplace(face_of[k], k);
+    auto index_of = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
+    for(std::size_t k = 0; k < face_of.size(); ++k) put(index_of, face_of[k], k);
     for(std::size_t l = 1; l < loops.size(); ++l) {
       std::vector<int> loop;
       std::vector<std::size_t> across;
       // The border halfedge s → t: the fill face (s, t, c) has the caller's orientation.
       for(halfedge_descriptor h : loops[l]) {
         loop.push_back(int(get(vimap, source(h, mesh))));
-        across.push_back(index_of[face(opposite(h, mesh), mesh)]);
+        across.push_back(get(index_of, face(opposite(h, mesh), mesh)));
       }
       D::fill_hole(P, loop, across);
     }

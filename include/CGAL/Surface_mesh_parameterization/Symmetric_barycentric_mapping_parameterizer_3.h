@@ -11,6 +11,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/kernel_traits.h>
 
 #include <CGAL/Default.h>
+#include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Eigen_solver_traits.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -20,8 +21,7 @@
 #include <Eigen/CholmodSupport>
 #endif
 
-#include <map>
-#include <set>
+#include <algorithm>
 #include <vector>
 
 namespace CGAL {
@@ -93,23 +93,30 @@ public:
     if(border != OK) return border;
     if(!m_border.is_border_convex()) return ERROR_NON_CONVEX_BORDER;
 
-    // The vertices of bhd's component, interior ones numbered from 0.
+    // The vertices of bhd's component, interior ones numbered from 0 in
+    // the order of their descriptors. Dynamic property maps, not trees of
+    // descriptors: millions of vertices.
+    auto seen = get(CGAL::dynamic_face_property_t<bool>(), mesh);
+    auto index = get(CGAL::dynamic_vertex_property_t<int>(), mesh);
+    for(face_descriptor f : faces(mesh)) put(seen, f, false);
+    for(vertex_descriptor v : vertices(mesh)) put(index, v, -2); // −2: not in the component, −1: in it
     std::vector<face_descriptor> stack(1, face(opposite(bhd, mesh), mesh));
-    std::set<face_descriptor> seen(stack.begin(), stack.end());
-    std::set<vertex_descriptor> on;
+    put(seen, stack.back(), true);
+    std::vector<vertex_descriptor> on;
     while(!stack.empty()) {
       const face_descriptor f = stack.back();
       stack.pop_back();
       for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh)) {
-        on.insert(target(h, mesh));
+        const vertex_descriptor v = target(h, mesh);
+        if(get(index, v) == -2) { put(index, v, -1); on.push_back(v); }
         const halfedge_descriptor o = opposite(h, mesh);
-        if(!is_border(o, mesh) && seen.insert(face(o, mesh)).second) stack.push_back(face(o, mesh));
+        if(!is_border(o, mesh) && !get(seen, face(o, mesh))) { put(seen, face(o, mesh), true); stack.push_back(face(o, mesh)); }
       }
     }
+    std::sort(on.begin(), on.end());
     std::vector<vertex_descriptor> interior;
-    std::map<vertex_descriptor, int> index;
     for(vertex_descriptor v : on)
-      if(!get(vpmap, v)) { index.emplace(v, int(interior.size())); interior.push_back(v); }
+      if(!get(vpmap, v)) { put(index, v, int(interior.size())); interior.push_back(v); }
     if(interior.empty()) return OK;
 
     const int n = int(interior.size());
@@ -119,9 +126,9 @@ public:
       double degree = 0;
       for(vertex_descriptor w : vertices_around_target(halfedge(interior[std::size_t(i)], mesh), mesh)) {
         degree += 1;
-        const auto it = index.find(w);
-        if(it != index.end()) {
-          triplets.emplace_back(i, it->second, -1.);
+        const int j = get(index, w);
+        if(j >= 0) {
+          triplets.emplace_back(i, j, -1.);
         } else {
           const Point_2 p = get(uvmap, w);
           rhs(i, 0) += CGAL::to_double(p.x());

@@ -136,10 +136,12 @@ inline std::vector<double> border_target_shares(const Disk_problem& P, const std
 /// (exact predicate) whose barrier energy E is below `gain` times `uv`'s;
 /// returns whether it did. `uv` must be positively oriented with the
 /// boundary loop counter-clockwise on `curve`, which is then rebuilt for the
-/// new positions.
+/// new positions. `solver` factorises Tutte's matrix of the interior, whose
+/// pattern is the flow's interior stiffness's: its analysis can serve the
+/// flow (Pattern_reusing_solver::adopt_analysis()).
 template <class EigenSolver>
 bool respace_border_by_area(const Disk_problem& P, std::vector<Vec2>& uv, Boundary_curve& curve,
-                            double gain, std::size_t rounds = 8)
+                            double gain, Pattern_reusing_solver<EigenSolver>& solver, std::size_t rounds = 8)
 {
   const std::size_t n = uv.size(), nb = P.boundary.size();
   if(curve.kind() != Discrete_lie_flow_border::CIRCLE || nb < 3) return false;
@@ -148,9 +150,8 @@ bool respace_border_by_area(const Disk_problem& P, std::vector<Vec2>& uv, Bounda
   Sparse_matrix A;
   const int ni = tutte_interior_matrix(P, n, interior, neighbours, A);
   if(ni == 0) return false;
-  EigenSolver solver;
-  solver.compute(A);
-  if(solver.info() != Eigen::Success) return false;
+  A.makeCompressed();
+  if(!solver.factorize(A)) return false;
 
   // What each border vertex owns: a third of each face per corner.
   const std::vector<int> owner = nearest_border_vertex(P);
@@ -183,8 +184,7 @@ bool respace_border_by_area(const Disk_problem& P, std::vector<Vec2>& uv, Bounda
           rhs(interior[v], 1) += candidate[std::size_t(w)][1];
         }
     }
-    x = solver.solve(rhs);
-    if(solver.info() != Eigen::Success || !x.allFinite()) break;
+    if(!solver.solve(rhs, x)) break;
     for(std::size_t v = 0; v < n; ++v)
       if(interior[v] >= 0) candidate[v] = {{ x(interior[v], 0), x(interior[v], 1) }};
     signed_areas_2(candidate, P.faces, u);

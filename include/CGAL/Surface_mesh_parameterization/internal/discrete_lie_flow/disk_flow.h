@@ -203,10 +203,13 @@ Error_code flow_disk(Disk_problem& P, std::vector<Vec2>& uv, const Discrete_lie_
     std::vector<double> u0;
     signed_areas_2(uv, P.faces, u0);
     const double E0 = Area_barrier_energy(P.target).value(u0);
+    // Tutte's system there is factorised by the flow's solver: its analysis
+    // serves the flow's interior stiffness (the same pattern).
     Planar_flow_settings settings;
+    Pattern_reusing_solver<EigenSolver> tutte(solver);
     if(opt.fixed_step == 0 && curve.kind() == Discrete_lie_flow_border::CIRCLE)
-      settings.coupled_metric = respace_border_by_area<EigenSolver>(P, uv, curve, 0.5);
-    Planar_certified_flow<EigenSolver> flow(P, uv, curve, opt, solver, settings);
+      settings.coupled_metric = respace_border_by_area<EigenSolver>(P, uv, curve, 0.5, tutte);
+    Planar_certified_flow<EigenSolver> flow(P, uv, curve, opt, solver, settings, tutte.analyses() > 0 ? &tutte : nullptr);
     out = run_flow(flow, opt);
     out.initial_d_area = E0; // the caller's map
   }

@@ -92,9 +92,13 @@ template <class EigenSolver>
 class Planar_certified_flow : public Flow_policy_base
 {
 public:
+  /// `analysed` (optional): `eigen_solver` wrapped, its last analysis made
+  /// for a matrix of the interior stiffness's pattern (the Tutte system of
+  /// the start, respace_border_by_area()); the flow then skips its own.
   Planar_certified_flow(const Disk_problem& P, std::vector<Vec2>& uv, Boundary_curve& curve,
                         const Discrete_lie_flow_options& opt, EigenSolver& eigen_solver,
-                        const Planar_flow_settings& settings)
+                        const Planar_flow_settings& settings,
+                        const Pattern_reusing_solver<EigenSolver>* analysed = nullptr)
     : Flow_policy_base(Flow_stopping::rules_of(opt)), m_P(P), m_uv(uv), m_curve(curve), m_opt(opt), m_settings(settings), m_n(uv.size()),
       m_dofs(uv.size(), P.boundary, curve), m_energy(P.target), m_log_energy(m_energy),
       m_sobolev(m_dofs.boundary_of, eigen_solver), m_newton_solver(m_newton_eigen_solver),
@@ -102,7 +106,9 @@ public:
       m_basis(std::size_t(m_dofs.size)), m_tangent(uv.size()), m_around(0, std::vector<Face>()),
       m_levels(P.xyz, caller_part(P.faces, P), caller_part(P.target, P)), m_caller_energy(caller_part(P.target, P)),
       m_coupled(settings.coupled_metric)
-  {}
+  {
+    if(analysed) m_sobolev.adopt_analysis(*analysed);
+  }
 
   bool start(Flow_outcome& out)
   {

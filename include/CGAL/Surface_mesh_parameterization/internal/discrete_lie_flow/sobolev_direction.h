@@ -43,6 +43,9 @@ public:
 
   std::size_t analyses() const { return m_solver.analyses(); }
 
+  /// The analysis of `analysed` (same solver, a matrix of L_II's pattern) serves L_II.
+  void adopt_analysis(const Pattern_reusing_solver<EigenSolver>& analysed) { m_solver.adopt_analysis(analysed); }
+
   /// Assembles the cotangent stiffness of `faces` over `uv` into L_II and
   /// L_IB (fixed patterns: after the first call only numbers are added) and
   /// diag(L_BB).

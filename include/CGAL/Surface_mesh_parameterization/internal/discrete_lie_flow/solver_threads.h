@@ -32,20 +32,31 @@ constexpr std::size_t single_blas_thread_below = 500000;
 /// Sets the number of OpenBLAS threads for its lifetime and restores the
 /// previous number after: `threads` > 0 that many; 0 automatic (one below
 /// `single_blas_thread_below` vertices, unchanged above); < 0 unchanged.
+/// Automatic also turns on OpenMP's dynamic adjustment for the same
+/// lifetime: CHOLMOD's own parallel loops (it asks for 4 threads whatever
+/// the machine) then get at most as many threads as there are idle cores
+/// (the number of cores minus the load average, at least 1).
 /// Does nothing when the user chose through the environment
 /// (OPENBLAS_NUM_THREADS, GOTO_NUM_THREADS, OMP_NUM_THREADS,
-/// OMP_THREAD_LIMIT) or when the process has no OpenBLAS (looked up at run
-/// time, so that nothing is linked for it).
+/// OMP_THREAD_LIMIT; OMP_DYNAMIC for the dynamic adjustment) or when the
+/// process has no OpenBLAS or no OpenMP runtime (looked up at run time, so
+/// that nothing is linked for them).
 class Scoped_blas_threads
 {
 public:
   Scoped_blas_threads(int threads, std::size_t vertices)
   {
 #ifdef CGAL_DLF_CAN_SET_BLAS_THREADS
-    if(threads == 0) threads = vertices < single_blas_thread_below ? 1 : -1;
-    if(threads < 0) return;
     for(const char* v : { "OPENBLAS_NUM_THREADS", "GOTO_NUM_THREADS", "OMP_NUM_THREADS", "OMP_THREAD_LIMIT" })
       if(std::getenv(v) != nullptr) return;
+    if(threads == 0 && std::getenv("OMP_DYNAMIC") == nullptr) {
+      m_set_dynamic = reinterpret_cast<Set>(dlsym(RTLD_DEFAULT, "omp_set_dynamic"));
+      const Get get_dynamic = reinterpret_cast<Get>(dlsym(RTLD_DEFAULT, "omp_get_dynamic"));
+      if(m_set_dynamic == nullptr || get_dynamic == nullptr || get_dynamic() != 0) m_set_dynamic = nullptr;
+      else m_set_dynamic(1);
+    }
+    if(threads == 0) threads = vertices < single_blas_thread_below ? 1 : -1;
+    if(threads < 0) return;
     m_set = reinterpret_cast<Set>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
     const Get get = reinterpret_cast<Get>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
     if(m_set == nullptr || get == nullptr) { m_set = nullptr; return; }
@@ -60,6 +71,7 @@ public:
   ~Scoped_blas_threads()
   {
     if(m_set != nullptr) m_set(m_previous);
+    if(m_set_dynamic != nullptr) m_set_dynamic(0);
   }
   Scoped_blas_threads(const Scoped_blas_threads&) = delete;
   Scoped_blas_threads& operator=(const Scoped_blas_threads&) = delete;
@@ -67,7 +79,7 @@ public:
 private:
   typedef void (*Set)(int);
   typedef int (*Get)();
-  Set m_set = nullptr;
+  Set m_set = nullptr, m_set_dynamic = nullptr;
   int m_previous = 0;
 };
 

@@ -112,6 +112,18 @@ public:
 
   std::size_t analyses() const { return m_analyses; }
 
+  /// Takes over the analysis that `other`, wrapping the same solver, made
+  /// (its last factorization's pattern): a matrix of that pattern is then
+  /// factorised without a new analysis. The Tutte system of the start and
+  /// the interior stiffness of the flow share their pattern.
+  void adopt_analysis(const Pattern_reusing_solver& other)
+  {
+    CGAL_precondition(&other.m_solver == &m_solver);
+    m_outer = other.m_outer;
+    m_inner = other.m_inner;
+    m_analyses += other.m_analyses;
+  }
+
 private:
   bool same_pattern(const Sparse_matrix& A) const
   {

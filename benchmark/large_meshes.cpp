@@ -1,0 +1,294 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Large meshes against the solver's floor. Per mesh spec (e.g.
+// mannequin-devil.off+loop3), the mesh is subdivided and written as OFF to a
+// scratch directory, then:
+//  - the default `dlf disk MESH -o OUT.obj --report R.json --history` runs as a user
+//    runs it (whole process, no environment variable set by this program),
+//    timed from outside, with its maximum resident set size (wait4), and the
+//    split its report gives: read, check, initial map, flow setup, the
+//    iterations, write;
+//  - the floor: in this process, the cotangent stiffness of the interior
+//    (the matrix every Sobolev iteration factorizes) on the Tutte map of the
+//    same mesh, factorized once (symbolic analysis, numeric factorization)
+//    and solved once for two right-hand sides, with the same threads as the
+//    flow chooses (solver_threads.h).
+// The ratio (seconds per iteration) / (one factorization + one solve) says
+// how close an iteration is to its floor.
+//
+//   large_meshes --dlf build/examples/dlf --work DIR mannequin-devil.off+loop2 ...
+//
+// benchmark/large_meshes.sh runs the sizes of doc/large_meshes.md.
+
+#include <CGAL/Simple_cartesian.h>
+
+#include "benchmark_utilities.h"
+
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/solver_threads.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sobolev_direction.h>
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <nlohmann/json.hpp>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace {
+
+typedef CGAL::Simple_cartesian<double> K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+namespace dlf = CGAL::Surface_mesh_parameterization::internal::dlf;
+using dlf_benchmark::Clock;
+using dlf_benchmark::seconds_since;
+
+struct Process_run
+{
+  int exit_code = -1;
+  double seconds = 0, max_rss_gib = 0;
+};
+
+// Runs `argv` as a child process; its wall time and maximum resident set.
+Process_run run_process(const std::vector<std::string>& args)
+{
+  std::vector<char*> argv;
+  for(const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  Process_run r;
+  std::fflush(stdout);
+  const Clock::time_point t0 = Clock::now();
+  const pid_t pid = fork();
+  if(pid < 0) return r;
+  if(pid == 0) {
+    if(std::freopen("/dev/null", "w", stdout) == nullptr) _exit(127);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  int status = 0;
+  struct rusage usage;
+  if(wait4(pid, &status, 0, &usage) != pid) return r;
+  r.seconds = seconds_since(t0);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.max_rss_gib = double(usage.ru_maxrss) / (1024. * 1024.); // kilobytes on Linux
+  return r;
+}
+
+struct Floor
+{
+  std::size_t unknowns = 0;
+  double analyse = 0, factorize = 0, solve = 0;
+};
+
+// Tutte's map (uniform weights, border on the unit circle by arc length),
+// then the interior cotangent stiffness of that map: analysed, factorized
+// and solved once, as a flow iteration does.
+Floor measure_floor(const Mesh& mesh)
+{
+  const std::size_t n = num_vertices(mesh);
+  std::vector<dlf::Vec3> xyz(n);
+  std::vector<dlf::Face> triangles;
+  for(Mesh::Vertex_index v : vertices(mesh)) xyz[v.idx()] = {{ mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z() }};
+  for(Mesh::Face_index f : faces(mesh)) {
+    dlf::Face t;
+    int k = 0;
+    for(Mesh::Vertex_index v : vertices_around_face(halfedge(f, mesh), mesh)) t[std::size_t(k++)] = int(v.idx());
+    triangles.push_back(t);
+  }
+  // The longest border loop.
+  std::vector<int> loop;
+  double loop_length = 0;
+  std::vector<char> seen(num_halfedges(mesh), 0);
+  for(Mesh::Halfedge_index h : halfedges(mesh)) {
+    if(!is_border(h, mesh) || seen[h.idx()]) continue;
+    std::vector<int> l;
+    double length = 0;
+    for(Mesh::Halfedge_index g : halfedges_around_face(h, mesh)) {
+      seen[g.idx()] = 1;
+      l.push_back(int(target(g, mesh).idx()));
+      length += std::sqrt(CGAL::squared_distance(mesh.point(source(g, mesh)), mesh.point(target(g, mesh))));
+    }
+    if(length > loop_length) { loop_length = length; loop = l; }
+  }
+  std::vector<dlf::Vec2> uv(n, dlf::Vec2{{ 0, 0 }});
+  std::vector<int> boundary_of(n, -1);
+  double s = 0;
+  for(std::size_t k = 0; k < loop.size(); ++k) {
+    const double a = 2 * M_PI * s / loop_length;
+    uv[std::size_t(loop[k])] = {{ std::cos(a), std::sin(a) }};
+    boundary_of[std::size_t(loop[k])] = int(k);
+    const dlf::Vec3 &p = xyz[std::size_t(loop[k])], &q = xyz[std::size_t(loop[(k + 1) % loop.size()])];
+    s += std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+  }
+  std::vector<int> interior(n, -1);
+  int ni = 0;
+  for(std::size_t v = 0; v < n; ++v)
+    if(boundary_of[v] < 0) interior[v] = ni++;
+  std::vector<Eigen::Triplet<double> > trip;
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(ni, 2);
+  for(Mesh::Vertex_index v : vertices(mesh)) {
+    const int i = interior[v.idx()];
+    if(i < 0) continue;
+    double degree = 0;
+    for(Mesh::Vertex_index w : vertices_around_target(halfedge(v, mesh), mesh)) {
+      ++degree;
+      if(interior[w.idx()] >= 0) trip.emplace_back(i, interior[w.idx()], -1.);
+      else { rhs(i, 0) += uv[w.idx()][0]; rhs(i, 1) += uv[w.idx()][1]; }
+    }
+    trip.emplace_back(i, i, degree);
+  }
+  const dlf::Scoped_blas_threads threads(0, n); // the flow's automatic choice
+  {
+    dlf::Sparse_matrix T(ni, ni);
+    T.setFromTriplets(trip.begin(), trip.end());
+    dlf::Default_spd_solver tutte;
+    tutte.compute(T);
+    const Eigen::MatrixXd x = tutte.solve(rhs);
+    for(std::size_t v = 0; v < n; ++v)
+      if(interior[v] >= 0) uv[v] = {{ x(interior[v], 0), x(interior[v], 1) }};
+  }
+  // Counter-clockwise faces, as the flow makes them (else the cotangents change sign).
+  double twice_area = 0;
+  for(const dlf::Face& t : triangles) {
+    const dlf::Vec2 &a = uv[std::size_t(t[0])], &b = uv[std::size_t(t[1])], &c = uv[std::size_t(t[2])];
+    twice_area += (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+  }
+  if(twice_area < 0)
+    for(dlf::Vec2& p : uv) p[1] = -p[1];
+  // The flow's own assembly of the interior stiffness, then its solver.
+  dlf::Default_spd_solver eigen_solver;
+  dlf::Split_sobolev_direction<dlf::Default_spd_solver> sobolev(boundary_of, eigen_solver);
+  sobolev.assemble(uv, triangles);
+  Floor f;
+  f.unknowns = std::size_t(ni);
+  // Analysis and factorization apart: the Pattern_reusing_solver analyses on
+  // its first factorization, which is timed whole, then factorizes again.
+  Clock::time_point t0 = Clock::now();
+  if(!sobolev.factorize()) return f;
+  const double first = seconds_since(t0);
+  t0 = Clock::now();
+  sobolev.factorize();
+  f.factorize = seconds_since(t0);
+  f.analyse = (std::max)(0., first - f.factorize);
+  std::vector<dlf::Vec2> g(n, dlf::Vec2{{ 1, 0.5 }}), tangent(n, dlf::Vec2{{ 0, 0 }}), d;
+  t0 = Clock::now();
+  sobolev.solve(g, tangent, d); // two solves of two columns each, as in an iteration
+  f.solve = seconds_since(t0) / 2;
+  return f;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  namespace po = boost::program_options;
+  std::string data_dir = DLF_DATA_DIR, dlf_path = "build/examples/dlf", work, json_path;
+  std::vector<std::string> specs;
+  bool floor_only = false;
+  po::options_description desc("large_meshes [options] SPEC...  (SPEC: name.off, name.off+loopK)");
+  desc.add_options()("help,h", "show this help")
+    ("data-dir", po::value<std::string>(&data_dir), "directory with meshes/ (CGAL's data set)")
+    ("dlf", po::value<std::string>(&dlf_path), "the dlf tool to time")
+    ("work", po::value<std::string>(&work)->required(), "scratch directory for the meshes and outputs")
+    ("json", po::value<std::string>(&json_path), "write every number to this JSON file")
+    ("floor-only", po::bool_switch(&floor_only), "measure the floor only (no dlf run)")
+    ("spec", po::value<std::vector<std::string> >(&specs), "mesh specs");
+  po::positional_options_description pos;
+  pos.add("spec", -1);
+  po::variables_map vm;
+  try {
+    po::store(po::command_line_parser(argc, argv).options(desc).positional(pos).run(), vm);
+    if(vm.count("help")) { std::cout << desc << "\n"; return 0; }
+    po::notify(vm);
+  } catch(const std::exception& e) {
+    std::cerr << "large_meshes: " << e.what() << "\n";
+    return 2;
+  }
+  const std::filesystem::path meshes = dlf_benchmark::mesh_directory("large_meshes", data_dir);
+  if(meshes.empty()) return 2;
+  std::filesystem::create_directories(work);
+  if(!floor_only) dlf_path = std::filesystem::absolute(dlf_path).string();
+
+  std::cout << "load " << dlf_benchmark::loadavg() << "\n";
+  std::printf("%-30s %9s %4s %7s %8s %6s | %6s %6s %6s %6s %7s %6s %6s | %8s %7s %7s %7s | %5s\n", "mesh", "faces", "it",
+              "d_area", "whole s", "GiB", "read", "check", "init", "setup", "per it", "write", "other", "unknowns",
+              "analyse", "factor", "solve", "ratio");
+  nlohmann::ordered_json all = nlohmann::ordered_json::array();
+  for(const std::string& spec_text : specs) {
+    dlf_benchmark::Mesh_spec spec;
+    std::string why;
+    if(!dlf_benchmark::parse_mesh_spec(spec_text, spec, why)) { std::cerr << "large_meshes: " << why << "\n"; return 2; }
+    Mesh mesh;
+    if(!CGAL::IO::read_polygon_mesh((meshes / spec.file).string(), mesh)) {
+      std::cerr << "large_meshes: cannot read " << spec.file << "\n";
+      return 2;
+    }
+    dlf_benchmark::subdivide(mesh, spec);
+    const std::string stem = (std::filesystem::path(work) / spec_text).string();
+    const std::string off = stem + ".off", obj = stem + ".obj", report = stem + ".json";
+    // A mesh already there (from an earlier run) is used and kept; one
+    // written here is removed once measured, as are the outputs.
+    const bool written = !floor_only && !std::filesystem::exists(off);
+    if(written && !CGAL::IO::write_polygon_mesh(off, mesh, CGAL::parameters::stream_precision(17))) {
+      std::cerr << "large_meshes: cannot write " << off << "\n";
+      return 2;
+    }
+    nlohmann::ordered_json row;
+    row["mesh"] = spec_text;
+    row["faces"] = num_faces(mesh);
+    Process_run run;
+    nlohmann::json R;
+    if(!floor_only) {
+      run = run_process({ dlf_path, "disk", off, "-o", obj, "--report", report, "--history" });
+      std::ifstream in(report);
+      if(in) R = nlohmann::json::parse(in, nullptr, false);
+    }
+    std::error_code ignored;
+    std::filesystem::remove(obj, ignored);
+    std::filesystem::remove(report, ignored);
+    if(written) std::filesystem::remove(off, ignored);
+    const Floor f = measure_floor(mesh);
+    mesh.clear();
+    double per_iteration = 0, setup = 0;
+    if(R.is_object() && R.contains("seconds")) {
+      // Per iteration: the iterations after the first (which includes the
+      // solver's symbolic analysis), from the history's elapsed times.
+      const nlohmann::json& h = R["history"];
+      const std::size_t k = h.is_array() ? h.size() : 0;
+      if(k >= 2) per_iteration = (h[k - 1]["seconds"].get<double>() - h[0]["seconds"].get<double>()) / double(k - 1);
+      const double iterations = k ? h[k - 1]["seconds"].get<double>() : 0;
+      setup = R["seconds"]["flow"].get<double>() - iterations;
+      row["iterations"] = R["iterations"];
+      row["d_area"] = R["final"]["d_area"];
+      row["inverted"] = R["final"]["inverted_faces"];
+      row["seconds"] = R["seconds"];
+    }
+    const double floor_seconds = f.factorize + f.solve;
+    row["whole_process_seconds"] = run.seconds;
+    row["exit_code"] = run.exit_code;
+    row["max_rss_gib"] = run.max_rss_gib;
+    row["flow_setup_seconds"] = setup;
+    row["seconds_per_iteration"] = per_iteration;
+    row["floor"] = { { "unknowns", f.unknowns }, { "analyse", f.analyse },
+                     { "factorize", f.factorize }, { "solve", f.solve } };
+    row["ratio"] = floor_seconds > 0 ? per_iteration / floor_seconds : 0.;
+    all.push_back(row);
+    const auto sec = [&](const char* k) { return R.is_object() && R["seconds"].contains(k) ? R["seconds"][k].get<double>() : 0.; };
+    const double other = run.seconds - sec("read") - sec("check") - sec("total") - sec("write");
+    std::printf("%-30s %9zu %4d %7.4f %8.2f %6.2f | %6.2f %6.2f %6.2f %6.2f %7.3f %6.2f %6.2f | %8zu %7.3f %7.3f %7.3f | %5.2f\n",
+                spec_text.c_str(), std::size_t(row["faces"]), R.is_object() ? R.value("iterations", 0) : 0,
+                R.is_object() && R["final"].is_object() ? R["final"]["d_area"].get<double>() : 0., run.seconds,
+                run.max_rss_gib, sec("read"), sec("check"), sec("initial"), setup, per_iteration, sec("write"), other,
+                f.unknowns, f.analyse, f.factorize, f.solve, floor_seconds > 0 ? per_iteration / floor_seconds : 0.);
+    std::fflush(stdout);
+  }
+  std::cout << "load " << dlf_benchmark::loadavg() << "\n";
+  if(!json_path.empty()) std::ofstream(json_path) << all.dump(2) << "\n";
+  return 0;
+}

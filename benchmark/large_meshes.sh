@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Large meshes against the solver's floor (doc/large_meshes.md): the default
+# `dlf disk` on lion-head and mannequin-devil subdivided 1 to 4 times by Loop
+# (66K to 6.6M faces), whole process and its split, beside one factorization
+# and one solve of the interior stiffness of the same mesh.
+#
+#   benchmark/large_meshes.sh                  # all sizes (about half an hour on 2 cores)
+#   benchmark/large_meshes.sh SPEC...          # some, e.g. mannequin-devil.off+loop2
+#
+# DLF (default build/examples/dlf), BENCH (default build/benchmark/large_meshes),
+# DATA (default build/data, with meshes/), WORK (default: a temporary
+# directory, removed after; the subdivided meshes are written there),
+# JSON (optional: every number).
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+DLF="${DLF:-build/examples/dlf}"
+BENCH="${BENCH:-build/benchmark/large_meshes}"
+DATA="${DATA:-build/data}"
+[[ -x "$DLF" ]] || { echo "large_meshes: $DLF not built" >&2; exit 2; }
+[[ -x "$BENCH" ]] || { echo "large_meshes: $BENCH not built (-DDLF_BUILD_BENCHMARK=ON, target large_meshes)" >&2; exit 2; }
+if [[ -z "${WORK:-}" ]]; then
+  WORK="$(mktemp -d)"
+  trap 'rm -rf "$WORK"' EXIT
+fi
+specs=("$@")
+if [[ ${#specs[@]} -eq 0 ]]; then
+  specs=(lion-head.off+loop1 lion-head.off+loop2 lion-head.off+loop3 lion-head.off+loop4
+         mannequin-devil.off+loop1 mannequin-devil.off+loop2 mannequin-devil.off+loop3 mannequin-devil.off+loop4)
+fi
+args=(--dlf "$DLF" --data-dir "$DATA" --work "$WORK")
+[[ -n "${JSON:-}" ]] && args+=(--json "$JSON")
+# Each mesh and its outputs are removed once measured: the largest take GBs.
+exec "$BENCH" "${args[@]}" "${specs[@]}"
