@@ -62,6 +62,32 @@ inline Vec2 in_plane(const Vec3& a, const Vec3& b, const Vec3& c)
   return {{ dot(u, v) / lu, norm3(cross(u, v)) / lu }};
 }
 
+/// The paper's Table 1 "Wasserstein distance" and Area_total: the L² and
+/// L¹ distances between the faces' shares `A / sumA` and `Ad / sumAd`.
+inline void share_distances(const std::vector<double>& A, const std::vector<double>& Ad, double sumA, double sumAd,
+                            Distortion_metrics& m)
+{
+  for(std::size_t f = 0; f < A.size(); ++f) {
+    const double share_in = A[f] / sumA, share_out = sumAd > 0 ? Ad[f] / sumAd : 0.;
+    m.wasserstein_table1 += (share_in - share_out) * (share_in - share_out);
+    m.area_total += std::abs(share_in - share_out);
+  }
+  m.wasserstein_table1 = std::sqrt(m.wasserstein_table1);
+}
+
+/// |μ| = |f_z̄| / |f_z| of the affine map of the triangle (q0, q1, q2) onto
+/// (p0, p1, p2), each laid out in its own plane; an inverted face is
+/// mirrored, so |μ| > 1; +∞ for a sliver that rounding flattened.
+inline double face_beltrami(const Vec3& q0, const Vec3& q1, const Vec3& q2, const Vec3& p0, const Vec3& p1,
+                            const Vec3& p2, bool inverted)
+{
+  const Vec2 q2d[3] = { {{ 0., 0. }}, {{ norm3(sub(q1, q0)), 0. }}, in_plane(q0, q1, q2) };
+  Vec2 p2d[3] = { {{ 0., 0. }}, {{ norm3(sub(p1, p0)), 0. }}, in_plane(p0, p1, p2) };
+  if(inverted) p2d[2][1] = -p2d[2][1];
+  const double mu = affine_beltrami(q2d[0], q2d[1], q2d[2], p2d[0], p2d[1], p2d[2]);
+  return mu < 0 ? std::numeric_limits<double>::infinity() : mu;
+}
+
 /// Metrics of the map xyz → dom over `faces`. `dom` holds domain points in 3D
 /// (z = 0 for planar maps). `orientation_positive(f)` tells the exact sign of
 /// face f on the domain (+1, 0, −1). `density` is per face, empty for ρ ≡ 1.
@@ -92,12 +118,7 @@ Distortion_metrics distortion_metrics(const std::vector<Vec3>& xyz, const std::v
   double min_angle = M_PI;
   double log_sum = 0, log_sq = 0, beltrami_sum = 0;
   std::size_t counted = 0;
-  for(std::size_t f = 0; f < F; ++f) {
-    const double share_in = A[f] / sumA, share_out = sumAd > 0 ? Ad[f] / sumAd : 0.;
-    m.wasserstein_table1 += (share_in - share_out) * (share_in - share_out);
-    m.area_total += std::abs(share_in - share_out);
-  }
-  m.wasserstein_table1 = std::sqrt(m.wasserstein_table1);
+  share_distances(A, Ad, sumA, sumAd, m);
   for(std::size_t f = 0; f < F; ++f) {
     const Face& t = faces[f];
     if(sgn[f] == 0 || Ad[f] == 0 || A[f] == 0) { ++m.degenerate_faces; continue; }
@@ -127,14 +148,9 @@ Distortion_metrics distortion_metrics(const std::vector<Vec3>& xyz, const std::v
     const double s2signed = inverted ? -s2 : s2;
     m.arap += w * ((s1 - 1) * (s1 - 1) + (s2signed - 1) * (s2signed - 1));
     m.symmetric_dirichlet += s1 * s1 + 1 / (s1 * s1) + s2 * s2 + 1 / (s2 * s2);
-    // |μ| = |f_z̄| / |f_z| = (σ1 − σ2) / (σ1 + σ2) with σ2 signed, computed from
-    // the triangles in their own planes (the σ above lose half the digits
-    // near a conformal map); an inverted face is mirrored, so |μ| > 1.
-    const Vec2 q2d[3] = { {{ 0., 0. }}, {{ norm3(sub(q1, q0)), 0. }}, in_plane(q0, q1, q2) };
-    Vec2 p2d[3] = { {{ 0., 0. }}, {{ norm3(sub(p1, p0)), 0. }}, in_plane(p0, p1, p2) };
-    if(inverted) p2d[2][1] = -p2d[2][1];
-    double mu = affine_beltrami(q2d[0], q2d[1], q2d[2], p2d[0], p2d[1], p2d[2]);
-    if(mu < 0) mu = std::numeric_limits<double>::infinity(); // a sliver flattened by rounding
+    // |μ| from the triangles in their own planes: the σ above lose half the
+    // digits near a conformal map.
+    const double mu = face_beltrami(q0, q1, q2, p0, p1, p2, inverted);
     beltrami_sum += mu;
     m.beltrami_weighted_mean += w * mu;
     m.beltrami_max = (std::max)(m.beltrami_max, mu);
