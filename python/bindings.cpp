@@ -135,20 +135,35 @@ std::string number(double x)
   return b;
 }
 
+// A number option; a TypeError (as Python's own) for anything else.
+double number_arg(const py::object& x, const char* name)
+{
+  if(PyBool_Check(x.ptr()) || !PyNumber_Check(x.ptr()) || PyUnicode_Check(x.ptr()))
+    throw py::type_error(std::string(name) + " must be a number, got " + std::string(py::str(py::type::of(x).attr("__name__"))));
+  return py::float_(x).cast<double>();
+}
+
+long long integer_arg(const py::object& x, const char* name)
+{
+  if(PyBool_Check(x.ptr()) || !PyIndex_Check(x.ptr()))
+    throw py::type_error(std::string(name) + " must be an integer, got " + std::string(py::str(py::type::of(x).attr("__name__"))));
+  return py::int_(x).cast<long long>();
+}
+
 // The options common to both flows, as the tool's arguments.
 void add_flow_arguments(std::vector<std::string>& args, const std::string& mode, const py::object& tolerance,
                         const py::object& max_iterations, const py::object& mu, const py::object& share_tolerance,
                         bool literal_targets, bool delaunay_flips, bool history)
 {
   args.insert(args.end(), { "--mode", mode, "--quiet" });
-  if(!tolerance.is_none()) args.insert(args.end(), { "--tolerance", number(tolerance.cast<double>()) });
+  if(!tolerance.is_none()) args.insert(args.end(), { "--tolerance", number(number_arg(tolerance, "tolerance")) });
   if(!max_iterations.is_none()) {
-    const long long n = max_iterations.cast<long long>();
+    const long long n = integer_arg(max_iterations, "max_iterations");
     if(n < 0) value_error("--max-iterations must be >= 0");
     args.insert(args.end(), { "--max-iterations", std::to_string(n) });
   }
-  if(!mu.is_none()) args.insert(args.end(), { "--mu", number(mu.cast<double>()) });
-  if(!share_tolerance.is_none()) args.insert(args.end(), { "--share-tolerance", number(share_tolerance.cast<double>()) });
+  if(!mu.is_none()) args.insert(args.end(), { "--mu", number(number_arg(mu, "mu")) });
+  if(!share_tolerance.is_none()) args.insert(args.end(), { "--share-tolerance", number(number_arg(share_tolerance, "share_tolerance")) });
   if(literal_targets) args.push_back("--literal-targets");
   if(!delaunay_flips) args.push_back("--no-flips");
   if(history) args.push_back("--history");
@@ -289,7 +304,7 @@ py::tuple sphere(const py::object& V, const py::object& F, const std::string& mo
   std::vector<std::string> args{ name };
   add_flow_arguments(args, mode, tolerance, max_iterations, mu, share_tolerance, literal_targets, delaunay_flips, history);
   if(!log_area_tolerance.is_none())
-    args.insert(args.end(), { "--log-area-tolerance", number(log_area_tolerance.cast<double>()) });
+    args.insert(args.end(), { "--log-area-tolerance", number(number_arg(log_area_tolerance, "log_area_tolerance")) });
   dlf_cli::Sphere_settings s;
   Python_callback progress(callback);
   dlf_cli::Sphere_outcome outcome;

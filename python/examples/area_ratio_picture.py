@@ -1,7 +1,8 @@
 # Copyright (c) 2026 The Discrete Lie Flow authors.
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""The picture of doc/python.md: a mesh mapped with discrete_lie_flow, the
-initial (Tutte) map beside the flow's result, triangles coloured by the log2
+"""The picture of doc/python.md: a mesh mapped with discrete_lie_flow: the
+initial (Tutte) map, the flow's result, and the flow with 4 times the
+density on the faces right of the median x; triangles coloured by the log2
 of their area ratio (share of the map's area over share of the surface's).
 
     python3 python/examples/area_ratio_picture.py MESH.off OUT.png
@@ -43,9 +44,14 @@ def main(mesh, out):
     # The initial map: no iteration of the flow.
     tutte, _ = dlf.disk(V, F, max_iterations=0)
     uv, report = dlf.disk(V, F)
-    fig, axes = plt.subplots(1, 2, figsize=(9, 4.6))
-    for ax, (title, m) in zip(axes, (("Tutte (initial map)", tutte),
-                                     (f"Discrete Lie flow, D_area {report['final']['d_area']:.4f}", uv))):
+    centroid_x = V[F].mean(axis=1)[:, 0]
+    rho = np.where(centroid_x > np.median(centroid_x), 4.0, 1.0)  # one value per face
+    uv4, report4 = dlf.disk(V, F, density=rho)
+    fig, axes = plt.subplots(1, 3, figsize=(12, 4.4))
+    panels = (("Tutte (initial map)", tutte),
+              (f"Discrete Lie flow: D_area {report['final']['d_area']:.4f}", uv),
+              ("density 4 right of the median x", uv4))
+    for ax, (title, m) in zip(axes, panels):
         ratio = log2_area_ratio(V, F, m)
         polys = PolyCollection(m[F], array=np.clip(ratio, -3, 3), cmap="RdBu_r", edgecolors="face", linewidths=0.1)
         polys.set_clim(-3, 3)
@@ -54,9 +60,10 @@ def main(mesh, out):
         ax.autoscale_view()
         ax.set_axis_off()
         ax.set_title(title, fontsize=10)
-    fig.colorbar(polys, ax=axes, shrink=0.8, label="log2 area ratio")
+    fig.colorbar(polys, ax=axes, shrink=0.8, label="log2 area ratio (0: area preserved)")
     fig.savefig(out, dpi=100)
-    print(f"wrote {out}: {len(F)} faces, {report['iterations']} iterations, {report['stop_reason']}")
+    print(f"wrote {out}: {len(F)} faces; {report['iterations']} iterations, {report['stop_reason']}; "
+          f"with the density {report4['iterations']} iterations, {report4['stop_reason']}")
 
 
 if __name__ == "__main__":

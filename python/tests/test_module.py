@@ -233,8 +233,12 @@ def test_unsuitable_meshes_and_options_raise_value_error(nefertiti):
         dlf.score(V, F, np.zeros((3, 2)))
     with pytest.raises(ValueError, match="uv: vertex 0 has a non-finite coordinate"):
         dlf.score(V, F, np.full((len(V), 2), np.inf))
-    with pytest.raises(TypeError):
+    with pytest.raises(TypeError, match="tolerance must be a number, got str"):
         dlf.disk(V, F, tolerance="small")
+    with pytest.raises(TypeError, match="max_iterations must be an integer, got float"):
+        dlf.disk(V, F, max_iterations=2.5)
+    with pytest.raises(TypeError):
+        dlf.disk(V, F, mode=3)
 
 
 def test_flow_error_carries_the_report():
@@ -252,11 +256,11 @@ def test_flow_error_carries_the_report():
 def test_callback_sees_every_iteration_and_can_stop(nefertiti):
     V, F = nefertiti
     seen = []
-    _, full = dlf.disk(V, F, callback=lambda it: seen.append(it))
+    _, full = dlf.disk(V, F, tolerance=1e-6, callback=lambda it: seen.append(it))
     assert [it["iteration"] for it in seen] == list(range(1, full["iterations"] + 1))
     assert seen[-1]["d_area"] == full["domain_d_area"]
     assert full["iterations"] >= 3
-    uv, report = dlf.disk(V, F, callback=lambda it: it["iteration"] < 2)
+    uv, report = dlf.disk(V, F, tolerance=1e-6, callback=lambda it: it["iteration"] < 2)
     assert report["iterations"] == 2 and report["stop_reason"] == "interrupted"
     assert report["status"] == "not_converged" and np.isfinite(uv).all()
     assert report["final"]["inverted_faces"] == 0
