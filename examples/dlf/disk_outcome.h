@@ -10,6 +10,7 @@
 #define DLF_CLI_DISK_OUTCOME_H
 
 #include "arguments.h"
+#include "cli_error.h"
 #include "density_input.h"
 #include "disk_run.h"
 #include "mesh_input.h"
