@@ -135,6 +135,13 @@ std::string number(double x)
   return b;
 }
 
+// A word option (mode, init, border, name), which must not read as an option of the tool.
+const std::string& word_arg(const std::string& value, const char* name)
+{
+  if(value.empty() || value[0] == '-') value_error(std::string("invalid value '") + value + "' for " + name);
+  return value;
+}
+
 // A number option; a TypeError (as Python's own) for anything else.
 double number_arg(const py::object& x, const char* name)
 {
@@ -155,7 +162,7 @@ void add_flow_arguments(std::vector<std::string>& args, const std::string& mode,
                         const py::object& max_iterations, const py::object& mu, const py::object& share_tolerance,
                         bool literal_targets, bool delaunay_flips, bool history)
 {
-  args.insert(args.end(), { "--mode", mode, "--quiet" });
+  args.insert(args.end(), { "--mode", word_arg(mode, "mode"), "--quiet" });
   if(!tolerance.is_none()) args.insert(args.end(), { "--tolerance", number(number_arg(tolerance, "tolerance")) });
   if(!max_iterations.is_none()) {
     const long long n = integer_arg(max_iterations, "max_iterations");
@@ -263,14 +270,15 @@ py::tuple disk(const py::object& V, const py::object& F, const std::string& mode
     }
   }();
   const std::vector<double> density_values = density_of(density);
-  std::vector<std::string> args{ name, "--init", init, "--outer-loop", std::to_string(outer_loop) };
-  if(!border.is_none()) args.insert(args.end(), { "--border", border.cast<std::string>() });
+  std::vector<std::string> args{ word_arg(name, "name"), "--init", word_arg(init, "init"), "--outer-loop",
+                                 std::to_string(outer_loop) };
+  if(!border.is_none()) args.insert(args.end(), { "--border", word_arg(border.cast<std::string>(), "border") });
   add_flow_arguments(args, mode, tolerance, max_iterations, mu, share_tolerance, literal_targets, delaunay_flips, history);
   dlf_cli::Disk_settings s;
   Python_callback progress(callback);
   dlf_cli::Disk_outcome outcome;
   try {
-    dlf_cli::parse_disk_arguments(args, s);
+    if(!dlf_cli::parse_disk_arguments(args, s)) value_error("invalid options");
     // As with a density file: a density asks for a tighter default tolerance.
     if(!density_values.empty() && tolerance.is_none()) s.options.tolerance = dlf_cli::density_tolerance;
     progress.install(s.options);
@@ -301,7 +309,7 @@ py::tuple sphere(const py::object& V, const py::object& F, const std::string& mo
     }
   }();
   const std::vector<double> density_values = density_of(density);
-  std::vector<std::string> args{ name };
+  std::vector<std::string> args{ word_arg(name, "name") };
   add_flow_arguments(args, mode, tolerance, max_iterations, mu, share_tolerance, literal_targets, delaunay_flips, history);
   if(!log_area_tolerance.is_none())
     args.insert(args.end(), { "--log-area-tolerance", number(number_arg(log_area_tolerance, "log_area_tolerance")) });
@@ -309,7 +317,7 @@ py::tuple sphere(const py::object& V, const py::object& F, const std::string& mo
   Python_callback progress(callback);
   dlf_cli::Sphere_outcome outcome;
   try {
-    dlf_cli::parse_sphere_arguments(args, s);
+    if(!dlf_cli::parse_sphere_arguments(args, s)) value_error("invalid options");
     if(!density_values.empty() && tolerance.is_none()) s.options.tolerance = dlf_cli::density_tolerance;
     progress.install(s.options);
     py::gil_scoped_release release;

@@ -291,7 +291,7 @@ def run_study(args: argparse.Namespace) -> int:
         client = Client(args.scheduler)
     else:
         cluster = LocalCluster(n_workers=args.workers, threads_per_worker=1, processes=True,
-                               dashboard_address=None)
+                               dashboard_address=":0")
         client = Client(cluster)
     written = 0
     start = time.monotonic()
@@ -495,7 +495,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     if args.command == "report":
         return report_study(args)
     for c in CONFIGS.values():
-        print(f"{c.name:16} dlf {c.command} {' '.join(c.options):24} {c.description}")
+        command = " ".join(("dlf", c.command) + c.options)
+        print(f"{c.name:16} {command:30} {c.description}")
     return 0
 
 

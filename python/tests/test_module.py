@@ -239,6 +239,8 @@ def test_unsuitable_meshes_and_options_raise_value_error(nefertiti):
         dlf.disk(V, F, max_iterations=2.5)
     with pytest.raises(TypeError):
         dlf.disk(V, F, mode=3)
+    with pytest.raises(ValueError, match="invalid value '--help' for init"):
+        dlf.disk(V, F, init="--help")
 
 
 def test_flow_error_carries_the_report():

@@ -194,3 +194,25 @@ def test_killed_worker_loses_no_run(corpus, tmp_path):
     _, err = p.communicate(timeout=300)
     assert p.returncode == 0, err
     check_rows(rows_of(db))
+
+
+def test_study_on_an_existing_scheduler(corpus, tmp_path):
+    from distributed import LocalCluster
+
+    meshes, fake = corpus
+    db = tmp_path / "study.sqlite"
+    with LocalCluster(n_workers=1, threads_per_worker=1, processes=True, dashboard_address=":0") as cluster:
+        p = subprocess.run([sys.executable, "-m", "discrete_lie_flow.study", "run", str(meshes / "nefertiti.off"),
+                            str(meshes / "sphere.off"), "--db", str(db), "--scheduler", cluster.scheduler_address,
+                            "--config", "disk-certified", "--config", "sphere", "--dlf", DLF],
+                           capture_output=True, text=True, timeout=300)
+        assert p.returncode == 0, p.stderr
+        pids = {str(nanny.process.pid) for nanny in cluster.workers.values()}
+    rows = rows_of(db)
+    assert set(rows) == {(m, c) for m in ("nefertiti.off", "sphere.off") for c in ("disk-certified", "sphere")}
+    assert rows[("nefertiti.off", "disk-certified")]["status"] in ("ok", "not_converged")
+    assert rows[("sphere.off", "sphere")]["status"] in ("ok", "not_converged")
+    assert rows[("sphere.off", "disk-certified")]["status"] == "not_applicable"
+    # Run by the cluster's worker, not by a LocalCluster of the study's own.
+    assert len(pids) == 1
+    assert {r["worker"].split(":")[-1] for r in rows.values()} == pids
