@@ -128,16 +128,17 @@ def _mesh_fits(dlf: str, mesh: str, timeout: float, scratch: str) -> str:
         return "unknown"
 
 
-def run_one(mesh_key: str, mesh_path: str, config_name: str, dlf: str, timeout: float) -> dict:
+def run_one(mesh_key: str, mesh_path: str, config_name: str, dlf: str, timeout: float, every_config: bool = False) -> dict:
     """One row of ``runs``: `dlf info` decides whether the configuration
     applies (a mesh that fits neither command is given to both, whose
-    refusal is the result), then the configuration runs with a timeout."""
+    refusal is the result; with `every_config`, every mesh is given to
+    every configuration), then the configuration runs with a timeout."""
     config = CONFIGS[config_name]
     row = {"mesh": mesh_key, "config": config_name, "worker": f"{socket.gethostname()}:{os.getpid()}"}
     with tempfile.TemporaryDirectory(prefix="dlf-study-") as scratch:
         fits = _mesh_fits(dlf, mesh_path, timeout, scratch)
         row["fits"] = fits
-        if fits in ("dlf disk", "dlf sphere") and fits != "dlf " + config.command:
+        if not every_config and fits in ("dlf disk", "dlf sphere") and fits != "dlf " + config.command:
             row["status"] = "not_applicable"
             return _finish(row)
         report_path = os.path.join(scratch, "report.json")
@@ -298,7 +299,8 @@ def run_study(args: argparse.Namespace) -> int:
     futures = []
     try:
         futures = [
-            client.submit(run_one, key, path, c, dlf, args.timeout, key=f"dlf-study-{c}-{key}-{args.db}",
+            client.submit(run_one, key, path, c, dlf, args.timeout, args.every_config,
+                          key=f"dlf-study-{c}-{key}-{args.db}",
                           pure=False, retries=args.retries)
             for key, path, c in todo
         ]
@@ -473,6 +475,9 @@ def parser() -> argparse.ArgumentParser:
     r.add_argument("--config", action="append", metavar="NAME",
                    help="a configuration (repeatable; default: " + ", ".join(DEFAULT_CONFIGS) + "); known: "
                    + ", ".join(CONFIGS))
+    r.add_argument("--every-config", action="store_true",
+                   help="give every mesh to every configuration, whatever its topology (robustness studies: "
+                        "the tool's refusal is the result)")
     r.add_argument("--dlf", metavar="PATH", help="the dlf executable (default: $DLF_EXECUTABLE, or dlf on PATH)")
     r.add_argument("--retries", type=int, default=0, metavar="K",
                    help="re-run a task whose worker died K more times (dask also reschedules the tasks of a "

@@ -204,7 +204,7 @@ def test_study_on_an_existing_scheduler(corpus, tmp_path):
     with LocalCluster(n_workers=1, threads_per_worker=1, processes=True, dashboard_address=":0") as cluster:
         p = subprocess.run([sys.executable, "-m", "discrete_lie_flow.study", "run", str(meshes / "nefertiti.off"),
                             str(meshes / "sphere.off"), "--db", str(db), "--scheduler", cluster.scheduler_address,
-                            "--config", "disk-certified", "--config", "sphere", "--dlf", DLF],
+                            "--config", "disk-certified", "--config", "sphere", "--every-config", "--dlf", DLF],
                            capture_output=True, text=True, timeout=300)
         assert p.returncode == 0, p.stderr
         pids = {str(nanny.process.pid) for nanny in cluster.workers.values()}
@@ -212,7 +212,10 @@ def test_study_on_an_existing_scheduler(corpus, tmp_path):
     assert set(rows) == {(m, c) for m in ("nefertiti.off", "sphere.off") for c in ("disk-certified", "sphere")}
     assert rows[("nefertiti.off", "disk-certified")]["status"] in ("ok", "not_converged")
     assert rows[("sphere.off", "sphere")]["status"] in ("ok", "not_converged")
-    assert rows[("sphere.off", "disk-certified")]["status"] == "not_applicable"
+    # --every-config: each mesh given to the other command too, which refuses it.
+    for mesh, config, what in (("sphere.off", "disk-certified", "not a disk"), ("nefertiti.off", "sphere", "genus")):
+        r = rows[(mesh, config)]
+        assert r["status"] == "input_error" and r["exit_code"] == 1 and what in r["error"], r
     # Run by the cluster's worker, not by a LocalCluster of the study's own.
     assert len(pids) == 1
     assert {r["worker"].split(":")[-1] for r in rows.values()} == pids
