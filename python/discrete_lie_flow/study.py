@@ -115,8 +115,26 @@ def _run_tool(argv: Sequence[str], timeout: float) -> Tuple[Optional[int], Optio
     return code, None, text, seconds, timed_out
 
 
+_FITS: Dict[Tuple[str, str, int, int], str] = {}  # per worker process: (dlf, mesh, size, mtime) -> fits
+
+
 def _mesh_fits(dlf: str, mesh: str, timeout: float, scratch: str) -> str:
-    """What `dlf info` says the mesh fits; "unknown" when info fails."""
+    """What `dlf info` says the mesh fits; "unknown" when info fails. Kept
+    per worker process for the other configurations of the same file."""
+    try:
+        st = os.stat(mesh)
+        key = (dlf, mesh, st.st_size, st.st_mtime_ns)
+    except OSError:
+        key = None
+    if key in _FITS:
+        return _FITS[key]
+    fits = _run_info(dlf, mesh, timeout, scratch)
+    if key is not None:
+        _FITS[key] = fits
+    return fits
+
+
+def _run_info(dlf: str, mesh: str, timeout: float, scratch: str) -> str:
     out = os.path.join(scratch, "info.json")
     code, _, _, _, _ = _run_tool([dlf, "info", mesh, "--report", out, "--quiet"], timeout)
     if code != 0:
@@ -280,6 +298,9 @@ def run_study(args: argparse.Namespace) -> int:
     db = open_db(args.db)
     done = done_keys(db)
     todo = [(key, path, c) for key, path in meshes for c in dict.fromkeys(configs) if (key, c) not in done]
+    # Largest files first (dask runs tasks about in submission order): the
+    # longest runs start early instead of leaving one worker busy at the end.
+    todo.sort(key=lambda t: -os.path.getsize(t[1]))
     total = len(meshes) * len(dict.fromkeys(configs))
     log = (lambda *a: None) if args.quiet else (lambda *a: print(*a, file=sys.stderr, flush=True))
     log(f"dlf-study: {len(meshes)} meshes x {len(set(configs))} configurations = {total} runs; "
