@@ -7,6 +7,7 @@
 # exactly once. Needs the Python module built (target dlf_python) and dask.
 #   bash benchmark/study_throughput.sh
 #   TIMEOUT=120 OUT=/tmp/t bash benchmark/study_throughput.sh
+#   ORDER="2 1" bash benchmark/study_throughput.sh    # 2 workers first (load drifts on a busy machine)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -19,7 +20,7 @@ export PYTHONPATH="$PWD/$BUILD_DIR/python"
 mkdir -p "$OUT"
 
 declare -A seconds
-for n in 1 2; do
+for n in ${ORDER:-1 2}; do
   db="$OUT/workers$n.sqlite"
   rm -f "$db" "$db-wal" "$db-shm"
   echo "workers $n: load average $(cut -d' ' -f1-3 /proc/loadavg)"
