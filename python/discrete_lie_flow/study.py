@@ -381,7 +381,7 @@ def summary_markdown(db: sqlite3.Connection) -> str:
     rows = [dict(zip(COLUMNS, r)) for r in db.execute(f"SELECT {', '.join(COLUMNS)} FROM runs ORDER BY config, mesh")]
     configs = sorted({r["config"] for r in rows}, key=lambda c: list(CONFIGS).index(c) if c in CONFIGS else 99)
     meshes = sorted({r["mesh"] for r in rows})
-    out = [f"{len(rows)} runs: {len(meshes)} meshes x {len(configs)} configurations.", ""]
+    out = [f"{len(rows)} runs: {len(meshes)} meshes, {len(configs)} configurations.", ""]
     out += ["| configuration | " + " | ".join(STATUSES) + " | runs |", "|---" * (len(STATUSES) + 2) + "|"]
     for c in configs:
         mine = [r for r in rows if r["config"] == c]
