@@ -35,7 +35,8 @@ done
 # As users run: whatever thread settings the caller's shell has are dropped.
 unset OMP_THREAD_LIMIT OMP_NUM_THREADS OPENBLAS_NUM_THREADS GOTO_NUM_THREADS
 
-# name:how — seam MESH SELECTION | cut|cut-root MESH TIPS | holes MESH
+# name:how — seam MESH SELECTION | cut|cut-root MESH TIPS | holes MESH |
+# cut-loop MESH K TIPS (K Loop subdivisions, then cut)
 all_cases=(
   "blob:seam blob.off test/data/blob.selection.txt"
   "bear:seam bear.off test/data/bear.selection.txt"
@@ -51,6 +52,8 @@ all_cases=(
   "man-5:cut man.off 5"
   "diplodocus-6:cut diplodocus.off 6"
   "armadillo-6:cut armadillo.off 6"
+  "camel-loop1-6:cut-loop camel.off 1 6"
+  "cow-loop2-6:cut-loop cow.off 2 6"
   "elephant-g3-6:cut elephant.off 6"
   "knot1-g1:cut knot1.off 4"
   "eight-g2:cut eight.off 4"
@@ -99,6 +102,11 @@ EOF
     cut|cut-root)
       [[ -x "$CUT" ]] || { echo "cut_surfaces: $CUT not built (-DDLF_BUILD_BENCHMARK=ON)" >&2; exit 2; }
       "$CUT" "${how[0]}" "$MESHES/${how[1]}" "${how[2]}" "$cut_mesh" >/dev/null
+      input="$cut_mesh" ;;
+    cut-loop)
+      [[ -x "$CUT" ]] || { echo "cut_surfaces: $CUT not built (-DDLF_BUILD_BENCHMARK=ON)" >&2; exit 2; }
+      "$CUT" subdivide "$MESHES/${how[1]}" "${how[2]}" "$tmp/fine.off" >/dev/null
+      "$CUT" cut "$tmp/fine.off" "${how[3]}" "$cut_mesh" >/dev/null
       input="$cut_mesh" ;;
     holes)
       cp "$MESHES/${how[1]}" "$cut_mesh"; input="$cut_mesh" ;;

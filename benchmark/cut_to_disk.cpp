@@ -20,6 +20,11 @@
 
 #include "cut_to_disk.h"
 
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/subdivision_method_3.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -32,7 +37,8 @@ int usage()
 {
   std::cerr << "usage: cut_to_disk cut|cut-root CLOSED.off K OUT.off [SEAM.selection.txt]\n"
                "       cut_to_disk maze N S OUT.off | comb TEETH LENGTH S OUT.off | spiral TURNS S OUT.off\n"
-               "       cut_to_disk slits N SLITS LENGTH OUT.off\n";
+               "       cut_to_disk slits N SLITS LENGTH OUT.off\n"
+               "       cut_to_disk subdivide CLOSED.off K OUT.off   (K steps of Loop subdivision)\n";
   return 2;
 }
 
@@ -79,6 +85,13 @@ int main(int argc, char** argv)
       dlf_cut::write_selection(sel, seam);
       ok = ok && bool(sel);
     }
+  } else if(what == "subdivide" && argc == 5) {
+    // Larger cut surfaces: subdivide first, then cut the result.
+    CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> mesh;
+    if(!CGAL::IO::read_polygon_mesh(argv[2], mesh)) { std::cerr << "cut_to_disk: cannot read " << argv[2] << "\n"; return 1; }
+    CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(std::atoi(argv[3])));
+    ok = CGAL::IO::write_OFF(argv[4], mesh, CGAL::parameters::stream_precision(17));
+    std::cout << "faces " << num_faces(mesh);
   } else if(what == "maze" && argc == 5) {
     ok = write(argv[4], dlf_cut::block_shape(dlf_cut::maze_blocks(std::atoi(argv[2])), std::atoi(argv[3])));
   } else if(what == "comb" && argc == 6) {

@@ -173,6 +173,10 @@ if [ -s nef.json ]; then
   check "score: d_area equals the report's final d_area (1e-9 relative)" \
     relatively_equal "$(json_get score.json metrics d_area)" "$(json_get nef.json final d_area)" 1e-9
   check "score: 0 inverted faces, as the report" equals "$(json_get score.json metrics inverted_faces) $(json_get nef.json final inverted_faces)" "0 0"
+  check "score: the Table 1 Wasserstein distance equals the report's (1e-9 relative)" \
+    relatively_equal "$(json_get score.json metrics wasserstein_table1)" "$(json_get nef.json final wasserstein_table1)" 1e-9
+  check "score: Area_total is reported and small" number_is "$(json_get score.json metrics area_total)" "<" 0.05
+  check "score: the Beltrami block is reported" bash -c "python3 -c \"import json,sys; b=json.load(open('score.json'))['metrics']['beltrami']; sys.exit(not (0 <= b['mean'] <= b['max'] and 0 <= b['weighted_mean'] <= b['max']))\""
   # a flat OBJ (v = uv, z = 0, no vt) is read too
   awk '/^vt / { print "v", $2, $3, 0 }' nef.obj > flat.obj
   "$DLF" score "$NEF" flat.obj --report flat.json > /dev/null 2>&1
@@ -183,6 +187,26 @@ fi
 # --- other modes and borders --------------------------------------------------
 "$DLF" disk "$NEF" --mode paper --report paper.json --domain-mesh paper_domain.obj -q
 check "paper mode exits 0" equals "$?" 0
+# --- --init-uv: the caller's own initial map (here the previous result) -----
+"$DLF" disk "$NEF" --init-uv nef.obj --report inituv.json -q
+check "--init-uv: exit 0 from a converged map, border free" equals \
+  "$? $(json_get inituv.json "" init) $(json_get inituv.json "" border)" "0 uv free"
+check "--init-uv: the start is the given map (its d_area)" relatively_equal \
+  "$(json_get inituv.json initial d_area)" "$(json_get nef.json final d_area)" 1e-9
+
+# --- literal mode: Algorithm 1 as printed; its collapse is reported, exit 3 ---
+"$DLF" disk "$NEF" --mode literal --report literal.json --domain-mesh literal_domain.obj -q 2> literal.err
+check "literal mode on nefertiti: exit 3 (collapsed: not converged)" equals "$?" 3
+check "literal mode: status not_converged, stop reason collapsed" equals \
+  "$(json_get literal.json "" status) $(json_get literal.json "" stop_reason)" "not_converged collapsed"
+check "literal mode: no folded flowing face returned" equals "$(json_get literal.json "" flowing_inverted_faces)" 0
+check "literal mode: the warning says collapsed" grep -q "collapsed" literal.err
+"$DLF" disk "$NEF" --mode literal --fixed-step 0.01 --max-iterations 5 --history --report literal_fixed.json -q 2> /dev/null
+check "literal mode, fixed step: 5 iterations of exactly 0.01" python3 -c \
+  'import json,sys; h=json.load(open("literal_fixed.json"))["history"]; sys.exit(not (len(h) == 5 and all(x["step"] == 0.01 for x in h)))'
+"$DLF" sphere "$MESHES/sphere.off" --mode literal --max-iterations 3 --report literal_sph.json -q 2> /dev/null
+check "literal mode on the sphere: 3 iterations, no folded flowing face" equals \
+  "$(json_get literal_sph.json "" iterations) $(json_get literal_sph.json "" flowing_inverted_faces)" "3 0"
 "$DLF" disk "$NEF" --verbose --max-iterations 2 > verbose.out 2>&1
 check "--verbose prints one line per iteration" equals "$(grep -c '^  iteration ' verbose.out)" \
   "$(grep '^  iterations ' verbose.out | awk '{ print $2 }')"
@@ -452,6 +476,13 @@ expect_error "non-triangle faces" 1 "not triangles" disk "$MESHES/quad.off"
 expect_error "genus 3 with holes" 1 "106 border loops, genus 3" disk "$MESHES/elephant-with-holes.off"
 expect_error "--outer-loop out of range" 1 "has 3 border loops (0 to 2" disk "$MESHES/head.off" --outer-loop 3
 expect_error "--outer-loop negative" 1 "--outer-loop must be >= 0" disk "$MESHES/head.off" --outer-loop -1
+expect_error "--init-uv with --init" 1 "--init-uv and --init exclude each other" disk "$NEF" --init-uv nef.obj --init mvc
+expect_error "--init-uv with another border" 1 "--border free only" disk "$NEF" --init-uv nef.obj --border circle
+expect_error "--init-uv: wrong vertex count" 1 "expected one uv per vertex" disk "$MESHES/mushroom.off" --init-uv nef.obj
+expect_error "--threshold outside literal mode" 1 "--threshold applies to --mode literal only" disk "$NEF" --threshold 0.1
+expect_error "--threshold not positive" 1 "--threshold must be a number > 0" disk "$NEF" --mode literal --threshold 0
+expect_error "--fixed-step not positive" 1 "--fixed-step must be a number > 0" disk "$NEF" --fixed-step -1
+expect_error "sphere --mode unknown" 1 "expected certified, paper or literal" sphere "$MESHES/sphere.off" --mode literall
 expect_error "paper mode refuses holes" 1 "--mode paper takes disks only: .* has 6 holes" disk "$MESHES/pig.off" --mode paper
 expect_error "unknown option" 1 "frobnicate" disk input.off --frobnicate
 expect_error "bad --mode value" 1 "'fast' for --mode" disk input.off --mode fast

@@ -43,6 +43,8 @@ MUTATIONS=(
   "holes: the fill oriented against the caller's faces|$DLF/disk_holes.h|P.faces.push_back(Face{{ a, b, c }});|P.faces.push_back(Face{{ b, a, c }});"
   "holes: the caller's start kept (no Tutte embedding of the filled disk)|$INC/Discrete_lie_flow_parameterizer_3.h|if(!D::filled_disk_tutte<|if(false && !D::filled_disk_tutte<"
   "holes: the report counts the fill's faces|$DLF/disk_flow.h|R.faces = P.caller_faces();|R.faces = P.faces.size();"
+  "literal mode: the full critical step (no μ)|$DLF/literal_flow.h|: step_fraction(opt, literal_default_mu) * critical;|: critical;"
+  "literal mode: a folding step taken (no exact check)|$DLF/literal_flow.h|count_orientations_2(m_trial, m_tri.faces);|count_orientations_2(m_trial, std::vector<Face>());"
 )
 
 # The fast subset: unit tests of the numerics, the area and share
@@ -53,9 +55,10 @@ TESTS=(
   'Features.*' 'Area_elements.*' 'Holes.*'
   'DataSet/Certified_disk.Circle/mushroom' 'DataSet/Certified_disk.Square/nefertiti'
   'DataSet/Free_border.Lscm/mushroom' 'DataSet/Paper_disk.Circle/mushroom'
+  'Errata.*' 'Literal.*'
 )
 # The test files those tests live in (the others are not built here).
-SOURCES=(test_numerics.cpp test_inputs.cpp test_density.cpp test_features.cpp test_disk_flow.cpp test_area_elements.cpp)
+SOURCES=(test_numerics.cpp test_inputs.cpp test_density.cpp test_features.cpp test_disk_flow.cpp test_area_elements.cpp test_literal.cpp)
 
 selected=("$@")
 if ((${#selected[@]} == 0)); then selected=($(seq 1 ${#MUTATIONS[@]})); fi

@@ -194,6 +194,30 @@ SMP::Discrete_lie_flow_options with_history()
 // Results written back to the mesh
 // ---------------------------------------------------------------------------
 
+// CGAL's parameterize() on a named parameterizer fills that object's report;
+// a copy owns its own report and is not touched by the original's runs.
+TEST(Features, EachParameterizerOwnsItsReport)
+{
+  Loaded m;
+  load("nefertiti", m);
+  UV_map uv = m.sm.add_property_map<SM_vertex, Point_2>("v:uv").first;
+  Dlf dlf;
+  const Dlf before_run = dlf;
+  ASSERT_EQ(SMP::parameterize(m.sm, dlf, m.bhd, uv), SMP::OK) << dlf.report().message;
+  EXPECT_GT(dlf.report().iterations, 0u);
+  EXPECT_TRUE(dlf.report().converged());
+  EXPECT_EQ(before_run.report().iterations, 0u);
+  EXPECT_TRUE(before_run.report().target_area.empty());
+
+  Dlf copy = dlf;
+  const std::size_t iterations = copy.report().iterations;
+  dlf.options().max_iterations = 1;
+  ASSERT_EQ(SMP::parameterize(m.sm, dlf, m.bhd, uv), SMP::OK);
+  EXPECT_EQ(dlf.report().iterations, 1u);
+  EXPECT_EQ(copy.report().iterations, iterations);
+  EXPECT_EQ(copy.domain_triangles().size(), num_faces(m.sm));
+}
+
 // area_elements(): A_Ω(v) is a third of the domain areas around v, A_M(v) a
 // third of the surface areas around v scaled to the domain's total.
 TEST(Features, AreaElementsAreTheLumpedAreas)

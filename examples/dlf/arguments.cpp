@@ -201,6 +201,29 @@ std::string Region_option::name() const
   return s.str();
 }
 
+/// The library's mode of a --mode value (checked before).
+SMP::Discrete_lie_flow_mode mode_of(const std::string& mode)
+{
+  return mode == "paper" ? SMP::Discrete_lie_flow_mode::PAPER
+       : mode == "literal" ? SMP::Discrete_lie_flow_mode::LITERAL : SMP::Discrete_lie_flow_mode::CERTIFIED;
+}
+
+/// The options that one mode alone reads, refused with the others.
+void check_mode_options(const po::variables_map& vm, const std::string& mode, const SMP::Discrete_lie_flow_options& opt)
+{
+  if(mode != "paper") {
+    if(vm.count("literal-targets")) throw Cli_error("--literal-targets applies to --mode paper only");
+    if(vm.count("no-flips")) throw Cli_error("--no-flips applies to --mode paper only");
+  }
+  if(vm.count("threshold") && !vm["threshold"].defaulted()) {
+    if(mode != "literal") throw Cli_error("--threshold applies to --mode literal only");
+    if(!(opt.paper.residual_threshold > 0) || !std::isfinite(opt.paper.residual_threshold))
+      throw Cli_error("--threshold must be a number > 0");
+  }
+  if(vm.count("fixed-step") && !(opt.fixed_step > 0 && std::isfinite(opt.fixed_step)))
+    throw Cli_error("--fixed-step must be a number > 0");
+}
+
 bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s)
 {
   const SMP::Discrete_lie_flow_options defaults;
@@ -221,10 +244,16 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
      "disk: a CGAL selection file whose line 3 lists the seam edges as pairs of vertex indices; if line 3 "
      "is empty, the vertices of line 1 are joined by shortest edge paths")
     ("mode", po::value<std::string>(&s.mode)->value_name("M")->default_value("certified"),
-     "certified: never folds the input triangles; paper: the paper's flow with edge flips")
+     "certified: never folds the input triangles; paper: the paper's flow with edge flips, stabilised "
+     "(line search, collapse guard, plateau tests); literal: Algorithm 1 as printed (step mu * min critical "
+     "step, stop when ||h_M - h_Omega||^2 < --threshold; a collapse ends the run)")
     ("init", po::value<std::string>(&s.init)->value_name("I")->default_value("tutte"),
      "initial map: tutte, mvc (mean value), dcp (discrete conformal) with a circle or square border; "
      "lscm, arap with a free border")
+    ("init-uv", po::value<std::string>(&s.init_uv_file)->value_name("MAP.obj"),
+     "the caller's own initial map instead of --init: an OBJ of the input with one vt (or a flat v) per "
+     "vertex, flip-free; any domain, convex or not (the paper's Fig. 10): the border slides along its polygon "
+     "(--border free)")
     ("border", po::value<std::string>(&s.border)->value_name("B"),
      "circle or square (tutte, mvc, dcp; default circle), or free: the border slides along the initial "
      "map's border (the only choice, and the default, for lscm and arap)")
@@ -252,6 +281,12 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
      "iteration cap")
     ("mu", po::value<double>(&mu)->value_name("X"),
      "fraction in (0, 1) of the smallest critical step that a step may take (default: the mode's own)")
+    ("fixed-step", po::value<double>(&s.options.fixed_step)->value_name("X"),
+     "a fixed step X > 0 instead of the adaptive one (the paper's Table 2); literal mode: a step that "
+     "folds the flowing mesh ends the run as collapsed, other modes: as stalled")
+    ("threshold", po::value<double>(&s.options.paper.residual_threshold)->value_name("X")
+       ->default_value(s.options.paper.residual_threshold),
+     "literal mode: stop when ||h_M - h_Omega||^2 < X, vertex area elements in units of their mean")
     ("literal-targets", "paper mode: lump the target areas once on the input triangles (Algorithm 1 read literally)")
     ("no-flips", "paper mode: no Delaunay edge flips")
     ("density", po::value<std::string>(&s.density_file)->value_name("FILE"),
@@ -293,8 +328,16 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
   s.input = inputs[0];
   set_verbosity(vm, s.verbosity);
 
-  require_one_of("mode", s.mode, { "certified", "paper" });
+  require_one_of("mode", s.mode, { "certified", "paper", "literal" });
   require_one_of("init", s.init, { "tutte", "mvc", "dcp", "lscm", "arap" });
+  if(!s.init_uv_file.empty()) {
+    if(!vm["init"].defaulted()) throw Cli_error("--init-uv and --init exclude each other");
+    if(!s.seam.empty()) throw Cli_error("--init-uv applies to meshes without --seam");
+    if(!s.border.empty() && s.border != "free")
+      throw Cli_error("--init-uv keeps the map's own border: --border free only");
+    s.init = "uv";
+    s.border = "free";
+  }
   if(s.border.empty()) s.border = has_fixed_border(s.init) ? "circle" : "free";
   require_one_of("border", s.border, { "circle", "square", "free" });
   if(!has_fixed_border(s.init) && s.border != "free")
@@ -315,13 +358,10 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
   if(!(s.options.certified.share_tolerance >= 0) || !std::isfinite(s.options.certified.share_tolerance))
     throw Cli_error("--share-tolerance must be a number >= 0");
   if(s.has_density() && vm["tolerance"].defaulted()) tolerance = density_tolerance;
-  if(s.mode != "paper") {
-    if(vm.count("literal-targets")) throw Cli_error("--literal-targets applies to --mode paper only");
-    if(vm.count("no-flips")) throw Cli_error("--no-flips applies to --mode paper only");
-  }
+  check_mode_options(vm, s.mode, s.options);
 
   SMP::Discrete_lie_flow_options& opt = s.options;
-  opt.mode = s.mode == "paper" ? SMP::Discrete_lie_flow_mode::PAPER : SMP::Discrete_lie_flow_mode::CERTIFIED;
+  opt.mode = mode_of(s.mode);
   opt.disk.border = s.border == "circle" ? SMP::Discrete_lie_flow_border::CIRCLE
              : s.border == "square" ? SMP::Discrete_lie_flow_border::SQUARE : SMP::Discrete_lie_flow_border::FREE;
   opt.tolerance = tolerance;
@@ -346,7 +386,9 @@ bool parse_score_arguments(const std::vector<std::string>& args, Score_settings&
   if(vm.count("help")) {
     std::cout << "Usage: dlf score [MESH] PARAM.obj [--report R.json]\n\n"
                  "Distortion metrics (d_area, arap, symmetric Dirichlet, log area ratio, inverted and\n"
-                 "degenerate faces, smallest angle) of the map of MESH's triangles given by PARAM.obj:\n"
+                 "degenerate faces, smallest angle, the paper's Table 1 'Wasserstein distance' and\n"
+                 "Area_total of the faces' area shares, Beltrami coefficient |mu|) of the map of MESH's\n"
+                 "triangles given by PARAM.obj:\n"
                  "its 'vt' lines, one per MESH vertex in order (as 'dlf disk' writes them), or, without\n"
                  "'vt', the x and y of its 'v' lines when all z are 0. When its faces 'f a/p b/q c/r'\n"
                  "name other 'vt' than their 'v' (per-corner uv: a map with seams, as 'dlf disk --seam'\n"

@@ -10,6 +10,7 @@
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 
 #include <boost/program_options/option.hpp>
+#include <boost/program_options/variables_map.hpp>
 
 #include <array>
 #include <ostream>
@@ -43,8 +44,10 @@ struct Disk_settings
   std::string texture_obj;                      ///< `--texture`: NAME.obj, with NAME.mtl and NAME.png
   int texture_size = 1024;                      ///< `--texture-size`: pixels a side
   bool history_in_report = false;               ///< `--history`
-  std::string mode = "certified";               ///< certified | paper
-  std::string init = "tutte";                   ///< tutte | mvc | dcp | lscm | arap
+  std::string mode = "certified";               ///< certified | paper | literal
+  std::string init = "tutte";                   ///< tutte | mvc | dcp | lscm | arap | uv (`--init-uv`)
+  std::string init_uv_file;                     ///< `--init-uv`: the caller's initial map (OBJ)
+  std::vector<std::array<double, 2> > init_uv;  ///< its uv per input vertex, once read
   std::string border;                           ///< circle | square | free (resolved from init if not given)
   std::string density_file;                     ///< `--density`: one value per face or per vertex
   std::vector<Region_option> regions;           ///< `--roi` / `--roi-ball`, in command-line order
@@ -78,6 +81,15 @@ std::vector<std::string> glue_region_balls(const std::vector<std::string>& args)
 std::vector<Region_option> regions_in_order(const std::vector<boost::program_options::option>& ordered);
 
 /// True for the fixed-border initial maps (convex border: circle or square).
+/// The library's mode of a --mode value: certified, paper or literal.
+CGAL::Surface_mesh_parameterization::Discrete_lie_flow_mode mode_of(const std::string& mode);
+
+/// Refuses the options that another mode alone reads (--literal-targets,
+/// --no-flips: paper; --threshold: literal) and bad --threshold or
+/// --fixed-step values.
+void check_mode_options(const boost::program_options::variables_map& vm, const std::string& mode,
+                        const CGAL::Surface_mesh_parameterization::Discrete_lie_flow_options& options);
+
 inline bool has_fixed_border(const std::string& init) { return init == "tutte" || init == "mvc" || init == "dcp"; }
 
 } // namespace dlf_cli

@@ -143,12 +143,15 @@ json make_report(const Disk_settings& s, const Indexed_mesh& input, const Seam_c
   j["domain_d_area"] = R.final_d_area;
   j["final_residual"] = R.final_residual;
   j["rejected_by_exact_check"] = R.rejected_by_exact_check;
+  j["collapse_faces"] = R.collapse_faces;
   j["seam"] = seam_json(s, cut);
   j["options"] = { { "tolerance", s.options.tolerance }, { "share_tolerance", s.options.certified.share_tolerance },
                    { "max_iterations", s.options.max_iterations },
                    { "mu", s.options.mu > 0 ? json(s.options.mu) : json(nullptr) }, // null: the mode's default
                    { "literal_targets", !s.options.paper.lump_targets_on_flowing_faces },
-                   { "delaunay_flips", s.options.paper.delaunay_flips } };
+                   { "delaunay_flips", s.options.paper.delaunay_flips },
+                   { "fixed_step", s.options.fixed_step > 0 ? json(s.options.fixed_step) : json(nullptr) },
+                   { "threshold", s.options.paper.residual_threshold } };
   // Metrics above are density-weighted (doc/design.md) when a density is given.
   j["density"] = density_json(s, density);
   if(density.source != "none") j["density"]["share_error"] = R.final_share_error; // density_levels.h
@@ -191,7 +194,7 @@ void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh
     if(final_metrics) out << " -> " << final_metrics->inverted_faces;
     out << "\n";
   }
-  if(s.mode == "paper") out << "  edge flips " << R.flips << "\n";
+  if(s.mode != "certified") out << "  edge flips " << R.flips << "\n";
   if(!s.density_file.empty()) out << "  density per " << density.source << " from " << s.density_file << "\n";
   for(const Density_region& r : density.regions) {
     out << "  region " << r.name << ": factor " << r.factor << ", " << r.faces.size() << " faces, share of the domain "
@@ -253,9 +256,10 @@ Disk_outcome compute_disk(const Indexed_mesh& input, Disk_settings& s, const std
     s.on_outer_loop.assign(mesh.xyz.size(), 0);
     for(int v : loops[std::size_t(s.outer_loop)].vertices) s.on_outer_loop[std::size_t(v)] = 1;
   }
-  if(loops.size() > 1 && s.mode == "paper")
-    throw Cli_error("--mode paper takes disks only: " + s.input + " has " + std::to_string(loops.size() - 1) +
+  if(loops.size() > 1 && s.mode != "certified")
+    throw Cli_error("--mode " + s.mode + " takes disks only: " + s.input + " has " + std::to_string(loops.size() - 1) +
                     (loops.size() == 2 ? " hole" : " holes") + " (the certified mode, the default, fills them for the flow)");
+  if(!s.init_uv_file.empty()) s.init_uv = read_uv_obj(s.init_uv_file, input.xyz.size());
   o.density = density_values.empty()
                 ? make_density(input, s)
                 : density_of_values(input, density_values, [&](std::size_t k) {
@@ -302,7 +306,7 @@ int disk_command(const std::vector<std::string>& args)
   if(!s.report.empty()) outputs.declare(s.report, "--report");
 
   const Indexed_mesh input = read_triangle_mesh(s.input);
-  Progress progress(s.verbosity, s.mode == "paper");
+  Progress progress(s.verbosity, s.mode != "certified");
   s.options.callback = progress.callback();
   Disk_outcome outcome;
   try {
@@ -338,7 +342,7 @@ int disk_command(const std::vector<std::string>& args)
       // Certified mode keeps the input triangulation; its faces are written
       // in input order (the report lists them in the library's walk order).
       const std::vector<Triangle>& domain =
-        s.mode == "paper" ? run.report.domain_faces : mesh.faces;
+        s.mode != "certified" ? run.report.domain_faces : mesh.faces;
       std::vector<Triangle> domain_positions = domain;
       if(!s.seam.empty())
         for(Triangle& t : domain_positions)

@@ -65,12 +65,41 @@ Disk_run run_fixed_border_init(const Disk_settings& settings, Run run)
     settings, run);
 }
 
-/// lscm or arap, both pinned by two vertices (CGAL's Two_vertices_parameterizer_3, their default border).
+/// The caller's own initial map (`--init-uv`): uv per vertex index, as the
+/// input lists its vertices. The flow checks that it is flip-free.
+template <class Mesh>
+class Given_uv_parameterizer
+{
+public:
+  explicit Given_uv_parameterizer(const std::vector<Vec2>& uv) : m_uv(&uv) {}
+  template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>
+  CGAL::Surface_mesh_parameterization::Error_code
+  parameterize(Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_descriptor, VertexUVmap uvmap,
+               VertexIndexMap vimap, VertexParameterizedMap vpmap)
+  {
+    typedef typename boost::property_traits<VertexUVmap>::value_type Point_2;
+    for(auto v : vertices(mesh)) {
+      const std::size_t i = std::size_t(get(vimap, v));
+      if(i >= m_uv->size()) return CGAL::Surface_mesh_parameterization::ERROR_WRONG_PARAMETER;
+      put(uvmap, v, Point_2((*m_uv)[i][0], (*m_uv)[i][1]));
+      put(vpmap, v, true);
+    }
+    return CGAL::Surface_mesh_parameterization::OK;
+  }
+  bool is_border_convex() const { return false; }
+
+private:
+  const std::vector<Vec2>* m_uv;
+};
+
+/// lscm or arap, both pinned by two vertices (CGAL's Two_vertices_parameterizer_3,
+/// their default border); or the caller's map (`--init-uv`).
 template <class Mesh, class Run>
 Disk_run run_free_border_init(const Disk_settings& settings, Run run)
 {
   namespace SMP = CGAL::Surface_mesh_parameterization;
   typedef SMP::Two_vertices_parameterizer_3<Mesh> Two_vertices;
+  if(settings.init == "uv") return run(Given_uv_parameterizer<Mesh>(settings.init_uv));
   if(settings.init == "arap") return run(SMP::ARAP_parameterizer_3<Mesh, Two_vertices>());
   return run(SMP::LSCM_parameterizer_3<Mesh, Two_vertices>());
 }

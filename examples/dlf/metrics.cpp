@@ -12,7 +12,7 @@ Metrics compute_metrics(const Indexed_mesh& mesh, const std::vector<Vec2>& uv, c
 
 nlohmann::ordered_json metrics_to_json(const Metrics& m)
 {
-  // Field names are fixed by doc/design.md ("Metrics"); the last two are additions.
+  // Field names are fixed by doc/design.md ("Metrics"); later ones are additions.
   return nlohmann::ordered_json{
     { "d_area", m.d_area },
     { "arap", m.arap },
@@ -22,7 +22,11 @@ nlohmann::ordered_json metrics_to_json(const Metrics& m)
     { "inverted_faces", m.inverted_faces },
     { "degenerate_faces", m.degenerate_faces },
     { "min_angle_degrees", m.min_angle_degrees },
-    { "faces_below_1_degree", m.faces_below_1_degree }
+    { "faces_below_1_degree", m.faces_below_1_degree },
+    { "wasserstein_table1", m.wasserstein_table1 },
+    { "area_total", m.area_total },
+    { "beltrami", { { "mean", m.beltrami_mean }, { "weighted_mean", m.beltrami_weighted_mean },
+                    { "max", m.beltrami_max } } }
   };
 }
 
@@ -36,7 +40,11 @@ void print_metrics(std::ostream& out, const Metrics& m, const std::string& inden
       << indent << "inverted faces       " << m.inverted_faces << "\n"
       << indent << "degenerate faces     " << m.degenerate_faces << "\n"
       << indent << "min angle (degrees)  " << m.min_angle_degrees << "  (" << m.faces_below_1_degree
-      << " faces below 1 degree)\n";
+      << " faces below 1 degree)\n"
+      << indent << "wasserstein (Table 1) " << m.wasserstein_table1 << "  (area shares, optimum 0)\n"
+      << indent << "area_total           " << m.area_total << "  (optimum 0)\n"
+      << indent << "|Beltrami|           mean " << m.beltrami_mean << ", area-weighted " << m.beltrami_weighted_mean
+      << ", max " << m.beltrami_max << "  (optimum 0: conformal)\n";
 }
 
 } // namespace dlf_cli

@@ -90,7 +90,15 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
     ("mu", po::value<double>(&s.options.mu), "fraction of the critical step, in (0, 1) (default 0.8)")
     ("history", "per-iteration history in the report")
     ("mode", po::value<std::string>(&s.mode)->value_name("M")->default_value("certified"),
-     "certified: never folds the input triangles; paper: the paper's flow with edge flips")
+     "certified: never folds the input triangles; paper: the paper's flow with edge flips, stabilised "
+     "(plateau and stall tests, best iterate); literal: Algorithm 1 as printed (step mu * min critical step, "
+     "stop when ||h_M - h_Omega||^2 < --threshold; a collapse ends the run)")
+    ("fixed-step", po::value<double>(&s.options.fixed_step)->value_name("X"),
+     "a fixed step X > 0 instead of the adaptive one; literal mode: a step that folds the flowing mesh "
+     "ends the run as collapsed, other modes: as stalled")
+    ("threshold", po::value<double>(&s.options.paper.residual_threshold)->value_name("X")
+       ->default_value(s.options.paper.residual_threshold),
+     "literal mode: stop when ||h_M - h_Omega||^2 < X, vertex area elements in units of their mean")
     ("domain-mesh", po::value<std::string>(&s.domain_mesh)->value_name("FLOW.obj"),
      "write the sphere points with the final flowing triangulation (the input's in certified mode)")
     ("literal-targets", "paper mode: lump the target areas once on the input triangles (Algorithm 1 read literally)")
@@ -137,13 +145,10 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
   if(!(s.options.certified.share_tolerance >= 0) || !std::isfinite(s.options.certified.share_tolerance))
     throw Cli_error("--share-tolerance must be a number >= 0");
   if(vm.count("mu") && !(s.options.mu > 0 && s.options.mu < 1)) throw Cli_error("--mu must be in (0, 1)");
-  if(s.mode != "certified" && s.mode != "paper")
-    throw Cli_error("invalid value '" + s.mode + "' for --mode (expected certified or paper)");
-  if(s.mode != "paper") {
-    if(vm.count("literal-targets")) throw Cli_error("--literal-targets applies to --mode paper only");
-    if(vm.count("no-flips")) throw Cli_error("--no-flips applies to --mode paper only");
-  }
-  s.options.mode = s.mode == "paper" ? SMP::Discrete_lie_flow_mode::PAPER : SMP::Discrete_lie_flow_mode::CERTIFIED;
+  if(s.mode != "certified" && s.mode != "paper" && s.mode != "literal")
+    throw Cli_error("invalid value '" + s.mode + "' for --mode (expected certified, paper or literal)");
+  check_mode_options(vm, s.mode, s.options);
+  s.options.mode = mode_of(s.mode);
   s.options.paper.lump_targets_on_flowing_faces = vm.count("literal-targets") == 0;
   s.options.paper.delaunay_flips = vm.count("no-flips") == 0;
   if(vm.count("quiet") && vm.count("verbose")) throw Cli_error("--quiet and --verbose exclude each other");
@@ -239,14 +244,17 @@ json sphere_report(const Sphere_settings& s, const Indexed_mesh& input, const Sp
                    { "max_iterations", s.options.max_iterations },
                    { "mu", s.options.mu > 0 ? json(s.options.mu) : json(nullptr) }, // null: the default
                    { "literal_targets", !s.options.paper.lump_targets_on_flowing_faces },
-                   { "delaunay_flips", s.options.paper.delaunay_flips } };
+                   { "delaunay_flips", s.options.paper.delaunay_flips },
+                   { "fixed_step", s.options.fixed_step > 0 ? json(s.options.fixed_step) : json(nullptr) },
+                   { "threshold", s.options.paper.residual_threshold } };
   // As `dlf disk`: "final" is measured on the input triangles; the flowing
   // triangulation (flipped in paper mode) has its own fields.
   j["mode"] = s.mode;
   j["caller_inverted_faces"] = ok ? json(R.caller_inverted_faces) : json(nullptr);
   j["flowing_inverted_faces"] = ok ? json(R.flowing_inverted_faces) : json(nullptr);
   j["flips"] = R.flips;
-  j["flowing_non_delaunay_edges"] = ok && s.mode == "paper" ? json(R.flowing_non_delaunay_edges) : json(nullptr);
+  j["flowing_non_delaunay_edges"] = ok && s.mode != "certified" ? json(R.flowing_non_delaunay_edges) : json(nullptr);
+  j["collapse_faces"] = R.collapse_faces;
   j["initial_domain_d_area"] = R.initial_d_area;
   j["domain_d_area"] = R.final_d_area;
   j["final_residual"] = R.final_residual;
@@ -304,7 +312,7 @@ int sphere_command(const std::vector<std::string>& args)
   if(!s.histogram_svg.empty()) outputs.declare(s.histogram_svg, "--plot-histogram");
 
   const Indexed_mesh input = read_triangle_mesh(s.input);
-  Progress progress(s.verbosity, s.mode == "paper");
+  Progress progress(s.verbosity, s.mode != "certified");
   s.options.callback = progress.callback();
   Sphere_outcome outcome;
   try {
@@ -334,12 +342,12 @@ int sphere_command(const std::vector<std::string>& args)
       write_points(o);
       for(const Triangle& t : input.faces) o << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
     });
-  // The flowing triangulation: flipped in paper mode, the input's otherwise.
+  // The flowing triangulation: flipped in paper and literal mode, the input's otherwise.
   if(ok && !s.domain_mesh.empty())
     outputs.write(s.domain_mesh, [&](std::ostream& o) {
       o << "# dlf sphere " << s.input << ": mode " << s.mode << ", flowing triangulation\n" << std::setprecision(17);
       write_points(o);
-      if(s.mode == "paper")
+      if(s.mode != "certified")
         for(const std::array<int, 3>& t : R.domain_faces) o << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
       else
         for(const Triangle& t : input.faces) o << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
@@ -372,8 +380,8 @@ int sphere_command(const std::vector<std::string>& args)
       std::cout << "  iterations " << R.iterations << " (" << SMP::discrete_lie_flow_stop_reason_name(R.stop_reason) << ")\n"
                 << "  d_area " << R.initial_metrics.d_area << " -> " << R.final_metrics.d_area << " (optimum 2)\n"
                 << "  inverted faces " << R.final_metrics.inverted_faces << "\n";
-      if(s.mode == "paper")
-        std::cout << "  mode paper: edge flips " << R.flips << ", d_area on the flowing triangulation "
+      if(s.mode != "certified")
+        std::cout << "  mode " << s.mode << ": edge flips " << R.flips << ", d_area on the flowing triangulation "
                   << R.final_d_area << ", input triangles folded " << R.caller_inverted_faces << "\n";
       std::cout << std::setprecision(3) << "  seconds: initial map " << R.seconds_initial << ", flow " << R.seconds_flow
                 << ", total " << total << "\n";

@@ -2,8 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Plots of a run as SVG: the convergence of the flow (d_area − 2 and the
-// area residual per iteration, log scale; the paper's Fig. 14) and the
-// histograms of per-face log area ratios before and after (its Fig. 11).
+// area residual per iteration, log scale, of one run; the paper's Fig. 14
+// overlays two runs, adaptive and fixed step, as benchmark/fig14.sh does) and
+// the histograms of per-face log area ratios before and after (its Fig. 11
+// bins per-vertex ratios; doc/paper_errata.md).
 
 #ifndef DLF_CLI_SVG_PLOTS_H
 #define DLF_CLI_SVG_PLOTS_H

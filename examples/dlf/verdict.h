@@ -33,6 +33,9 @@ inline std::string not_converged_hint(CGAL::Surface_mesh_parameterization::Discr
 {
   typedef CGAL::Surface_mesh_parameterization::Discrete_lie_flow_stop_reason Stop;
   if(r == Stop::INTERRUPTED) return "the run was interrupted";
+  if(r == Stop::COLLAPSED)
+    return "the literal Algorithm 1 collapsed, its documented failure (doc/paper_errata.md); a smaller --mu "
+           "or --fixed-step may go further, --mode paper or certified avoid it";
   std::string hint = r == Stop::ITERATION_CAP ? "it was still improving: a larger --max-iterations may reach the targets"
                                               : "more iterations will not help";
   if(disk)

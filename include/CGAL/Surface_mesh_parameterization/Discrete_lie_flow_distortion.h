@@ -47,6 +47,22 @@ discrete_lie_flow_sphere_distortion(const std::vector<std::array<double, 3> >& x
   return internal::dlf::spherical_distortion(xyz, sphere, faces, face_density);
 }
 
+/// \ingroup PkgDiscreteLieFlowParameterizers
+/// How far apart two planar maps `a` and `b` of the triangles `faces` over
+/// the points `xyz` are (doc/design.md, "Metrics"): the vertex-wise transport
+/// cost between them and the Beltrami coefficients of `b ∘ a⁻¹`, e.g. a DLF
+/// map against an optimal transport map, both from the same start.
+/// `face_density` (per face, empty for ρ ≡ 1) weighs the input areas.
+inline Discrete_lie_flow_map_difference
+discrete_lie_flow_map_difference(const std::vector<std::array<double, 3> >& xyz,
+                                 const std::vector<std::array<double, 2> >& a,
+                                 const std::vector<std::array<double, 2> >& b,
+                                 const std::vector<std::array<int, 3> >& faces,
+                                 const std::vector<double>& face_density = std::vector<double>())
+{
+  return internal::dlf::map_difference(xyz, a, b, faces, face_density);
+}
+
 namespace internal {
 namespace dlf {
 

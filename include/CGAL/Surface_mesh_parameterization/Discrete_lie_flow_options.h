@@ -86,10 +86,19 @@ enum class Discrete_lie_flow_mode
   /// critical-root step applied to the Sobolev gradient of the barrier energy
   /// D_area. Departs from the paper in the direction of motion. The default.
   CERTIFIED,
-  /// The paper's algorithm: Poisson potential of the area mismatch, Delaunay
-  /// edge flips of the flowing domain mesh, steps certified on the flowing
-  /// triangulation. The reference; may fold the caller's triangles.
-  PAPER
+  /// The paper's flow, stabilised: Poisson potential of the area mismatch,
+  /// Delaunay edge flips of the flowing domain mesh, a line search below the
+  /// critical step, a collapse guard and plateau tests (doc/paper_mode.md);
+  /// steps certified on the flowing triangulation. May fold the caller's
+  /// triangles.
+  PAPER,
+  /// Algorithm 1 of the paper as printed (doc/paper_errata.md for where the
+  /// print is corrected): Delaunay flips, targets lumped once on the input
+  /// triangles, the Poisson potential, the step λ = μ·min λ̃_t (Eq. 5) or a
+  /// fixed step, and the stop rule ‖h_M − h_Ω‖² < ε. No line search, no
+  /// guard: a step that folds or collapses the flowing mesh ends the run
+  /// (stop reason `COLLAPSED`), the last fold-free iterate returned.
+  LITERAL
 };
 
 /// \ingroup PkgDiscreteLieFlowOptions
@@ -111,7 +120,11 @@ enum class Discrete_lie_flow_stop_reason
   PLATEAU,        ///< the area distortion stopped improving
   STALLED,        ///< the step collapsed (a triangle keeps limiting it, or no step is acceptable)
   ITERATION_CAP,  ///< the iteration cap was reached
-  INTERRUPTED     ///< the per-iteration callback asked to stop
+  INTERRUPTED,    ///< the per-iteration callback asked to stop
+  /// Literal mode: the step folded or degenerated a face of the flowing mesh
+  /// (exact predicate), or no longer moved it (the critical step collapsed to
+  /// the rounding level); the paper's "c" (Table 2). The step is not taken.
+  COLLAPSED
 };
 
 /// \ingroup PkgDiscreteLieFlowOptions
@@ -125,17 +138,19 @@ inline const char* discrete_lie_flow_stop_reason_name(Discrete_lie_flow_stop_rea
   case Discrete_lie_flow_stop_reason::STALLED: return "stalled";
   case Discrete_lie_flow_stop_reason::ITERATION_CAP: return "iteration_cap";
   case Discrete_lie_flow_stop_reason::INTERRUPTED: return "interrupted";
+  case Discrete_lie_flow_stop_reason::COLLAPSED: return "collapsed";
   }
   return "unknown";
 }
 
 /// \ingroup PkgDiscreteLieFlowOptions
-/// The name of a mode as used in reports (`"certified"`, `"paper"`).
+/// The name of a mode as used in reports (`"certified"`, `"paper"`, `"literal"`).
 inline const char* discrete_lie_flow_mode_name(Discrete_lie_flow_mode m)
 {
   switch(m) {
   case Discrete_lie_flow_mode::CERTIFIED: return "certified";
   case Discrete_lie_flow_mode::PAPER: return "paper";
+  case Discrete_lie_flow_mode::LITERAL: return "literal";
   }
   return "unknown";
 }
@@ -183,9 +198,15 @@ struct Discrete_lie_flow_certified_options
 };
 
 /// \ingroup PkgDiscreteLieFlowOptions
-/// Settings of the paper mode only.
+/// Settings of the paper mode only (`step_cap`, `delaunay_flips`,
+/// `lump_targets_on_flowing_faces`, `degeneracy_ratio`) and of the literal
+/// mode only (`residual_threshold`).
 struct Discrete_lie_flow_paper_options
 {
+  /// Literal mode: the stop rule ‖h_M − h_Ω‖² < ε of Algorithm 1, with the
+  /// vertex area elements in units of their mean (ε bounds the mean squared
+  /// relative mismatch: 1e-3 is about 3% rms).
+  double residual_threshold = 1e-3;
   /// Largest step λ: the line search samples below min(4·step_cap, μ·λ_crit);
   /// step 1 is the full linearised correction.
   double step_cap = 1.0;
@@ -234,7 +255,8 @@ struct Discrete_lie_flow_options
   std::size_t max_iterations = 500;
   /// Fraction μ ∈ (0, 1) of the smallest critical root that a step may take;
   /// 0 selects the measured default (0.8; in paper mode 0.95, the bound of
-  /// its line search; doc/paper_mode.md).
+  /// its line search, doc/paper_mode.md; in literal mode 0.8, the top of the
+  /// paper's range 0.2–0.8).
   double mu = 0;
   /// Plateau test: stop when the progress (the energy; in paper mode the
   /// best D_area) improved by less than this relative amount over
@@ -250,7 +272,8 @@ struct Discrete_lie_flow_options
   /// The most step halvings an iteration may make; beyond, the flow stops as stalled.
   std::size_t max_backtracks = 60;
   /// Fixed step instead of the adaptive one (0: adaptive). For the paper's
-  /// Table 2 experiment; a fixed step that would fold is reported as stalled.
+  /// Table 2 experiment; a fixed step that would fold is reported as stalled
+  /// (literal mode: as collapsed).
   double fixed_step = 0;
   /// Per-face density ρ (> 0) in the order of `faces(mesh)`; empty means
   /// ρ ≡ 1. Targets are A_M(f) = ρ_f · area_M(f), normalised. Property maps

@@ -15,6 +15,9 @@
 #include <CGAL/Surface_mesh_parameterization/Symmetric_barycentric_mapping_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Containers_filler.h>
+#include <CGAL/boost/graph/properties.h>
 #include <CGAL/Surface_mesh_parameterization/internal/kernel_traits.h>
 
 #include <CGAL/Default.h>
@@ -42,15 +45,21 @@ namespace Surface_mesh_parameterization {
 ///
 /// The class `Discrete_lie_flow_parameterizer_3` computes an area-preserving
 /// (or density-prescribed) parameterization of a disk-topology triangle mesh
-/// by the Discrete Lie Flow of Su, Li, Zhao, Lei and Gu (\ref DLFBibSu2019 "Su et al. 2019"): starting from any flip-free
+/// by the Discrete Lie Flow of Kehua Su, Chencheng Li, Shifan Zhao, Na Lei and
+/// Xianfeng Gu, "Discrete Lie flow: A measure controllable parameterization
+/// method", Computer Aided Geometric Design 72 (2019) 49–68
+/// (\ref DLFBibSu2019 "Su et al. 2019"): starting from any flip-free
 /// initial map, the domain vertices flow until every triangle's domain area
 /// is proportional to its (density-weighted) surface area, with the step
 /// bounded by the closed-form critical roots and certified by CGAL's exact
 /// orientation predicate.
 ///
-/// Two modes (`Discrete_lie_flow_options::mode`): `CERTIFIED` (default) keeps
-/// the caller's connectivity and never folds it; `PAPER` follows the paper,
-/// flipping edges of the flowing domain mesh.
+/// Three modes (`Discrete_lie_flow_options::mode`): `CERTIFIED` (default)
+/// keeps the caller's connectivity and never folds it; `LITERAL` runs the
+/// paper's Algorithm 1 as printed (doc/paper_literal.md; its failure, a
+/// collapse, is reported as the stop reason `COLLAPSED`); `PAPER` is that
+/// flow stabilised (doc/paper_mode.md). Both flip edges of the flowing
+/// domain mesh. Where the printed paper is corrected: doc/paper_errata.md.
 ///
 /// Meshes with holes (a connected genus-0 component with several border
 /// loops, certified mode): the loop of `bhd` goes to the domain's border
@@ -108,8 +117,7 @@ public:
   explicit Discrete_lie_flow_parameterizer_3(Initial_parameterizer initial = Initial_parameterizer(),
                                              Discrete_lie_flow_options options = Discrete_lie_flow_options(),
                                              Solver_traits solver_traits = Solver_traits())
-    : m_initial(std::make_shared<Initial_parameterizer>(initial)), m_options(options),
-      m_solver_traits(solver_traits), m_shared(std::make_shared<Shared_state>())
+    : m_initial(initial), m_options(options), m_solver_traits(solver_traits)
   {}
 
   /// The flow settings, to read or change before `parameterize()`.
@@ -117,7 +125,7 @@ public:
   /// The flow settings.
   const Discrete_lie_flow_options& options() const { return m_options; }
   /// The parameterizer of the initial map.
-  Initial_parameterizer& initial_parameterizer() { return *m_initial; }
+  Initial_parameterizer& initial_parameterizer() { return m_initial; }
 
   /// Sets a per-face density ρ > 0 (a readable property map, `face_descriptor`
   /// → number). The domain area of a face becomes proportional to ρ·area.
@@ -133,8 +141,11 @@ public:
     m_vertex_density = [density](vertex_descriptor v) { return double(get(density, v)); };
   }
 
-  /// The report of the last run (shared by all copies of this object).
-  const Discrete_lie_flow_report& report() const { return *m_shared->report; }
+  /// The report of this object's last run. Each copy owns its report: CGAL's
+  /// `parameterize(mesh, parameterizer, bhd, uvmap)` runs a named
+  /// `Discrete_lie_flow_parameterizer_3` itself (the overload below), so its
+  /// `report()` describes that call.
+  const Discrete_lie_flow_report& report() const { return m_report; }
 
   /// Writes the area elements of the last run into vertex property maps
   /// (`vertex_descriptor` → number): `target` receives A_M(v), the lumped
@@ -145,10 +156,9 @@ public:
   template <class TargetAreaMap, class DomainAreaMap>
   void area_elements(TargetAreaMap target, DomainAreaMap domain) const
   {
-    const Discrete_lie_flow_report& R = *m_shared->report;
-    for(std::size_t i = 0; i < m_shared->vertex_of.size() && i < R.target_area.size(); ++i) {
-      put(target, m_shared->vertex_of[i], R.target_area[i]);
-      put(domain, m_shared->vertex_of[i], R.domain_area[i]);
+    for(std::size_t i = 0; i < m_vertex_of.size() && i < m_report.target_area.size(); ++i) {
+      put(target, m_vertex_of[i], m_report.target_area[i]);
+      put(domain, m_vertex_of[i], m_report.domain_area[i]);
     }
   }
 
@@ -157,9 +167,8 @@ public:
   std::vector<std::array<vertex_descriptor, 3> > domain_triangles() const
   {
     std::vector<std::array<vertex_descriptor, 3> > out;
-    for(const std::array<int, 3>& t : m_shared->report->domain_faces)
-      out.push_back({{ m_shared->vertex_of[std::size_t(t[0])], m_shared->vertex_of[std::size_t(t[1])],
-                       m_shared->vertex_of[std::size_t(t[2])] }});
+    for(const std::array<int, 3>& t : m_report.domain_faces)
+      out.push_back({{ m_vertex_of[std::size_t(t[0])], m_vertex_of[std::size_t(t[1])], m_vertex_of[std::size_t(t[2])] }});
     return out;
   }
 
@@ -176,7 +185,7 @@ public:
   {
     typedef std::chrono::steady_clock Clock;
     namespace D = internal::dlf;
-    Discrete_lie_flow_report& R = *m_shared->report;
+    Discrete_lie_flow_report& R = m_report;
     R = Discrete_lie_flow_report();
     auto fail = [&R](int code, const std::string& msg) { return D::report_failure(R, code, msg); };
     if(faces(mesh).empty()) return fail(ERROR_EMPTY_MESH, "");
@@ -189,10 +198,10 @@ public:
     std::vector<face_descriptor> face_of;
     Error_code code = gather(mesh, bhd, vimap, P, vertex_of, face_of);
     if(code != OK) return code;
-    m_shared->vertex_of = vertex_of;
+    m_vertex_of = vertex_of;
 
     const Clock::time_point t0 = Clock::now();
-    code = m_initial->parameterize(mesh, bhd, uvmap, vimap, vpmap);
+    code = m_initial.parameterize(mesh, bhd, uvmap, vimap, vpmap);
     R.seconds_initial = std::chrono::duration<double>(Clock::now() - t0).count();
     if(code != OK) return fail(code, std::string("initial map: ") + discrete_lie_flow_error_message(code));
 
@@ -244,13 +253,26 @@ private:
     return s + ")";
   }
 
+  // The component of `bhd` in index form: positions, faces, targets, and
+  // the holes filled (see `disk_holes.h`).
   template <typename VertexIndexMap>
   Error_code gather(const Triangle_mesh& mesh, halfedge_descriptor bhd, VertexIndexMap vimap,
                     internal::dlf::Disk_problem& P, std::vector<vertex_descriptor>& vertex_of,
                     std::vector<face_descriptor>& face_of)
   {
+    Error_code code = gather_component(mesh, bhd, vimap, P, vertex_of, face_of);
+    if(code == OK) code = gather_targets(mesh, vimap, P, vertex_of, face_of);
+    if(code == OK) code = gather_loops(mesh, bhd, vimap, P, face_of);
+    return code;
+  }
+
+  template <typename VertexIndexMap>
+  Error_code gather_component(const Triangle_mesh& mesh, halfedge_descriptor bhd, VertexIndexMap vimap,
+                              internal::dlf::Disk_problem& P, std::vector<vertex_descriptor>& vertex_of,
+                              std::vector<face_descriptor>& face_of)
+  {
     namespace D = internal::dlf;
-    Discrete_lie_flow_report& R = *m_shared->report;
+    Discrete_lie_flow_report& R = m_report;
     auto fail = [&R](int code, const std::string& msg) { return D::report_failure(R, code, msg); };
     // Faces of the component, by a walk across non-border edges.
     std::vector<face_descriptor> stack(1, face(opposite(bhd, mesh), mesh));
@@ -299,7 +321,18 @@ private:
       for(vertex_descriptor v : vertices_around_face(halfedge(f, mesh), mesh)) t[k++] = int(get(vimap, v));
       P.faces.push_back(t);
     }
-    // Targets: ρ_f · area_M(f); options.face_density follows faces(mesh).
+    return OK;
+  }
+
+  // Targets: ρ_f · area_M(f); options.face_density follows faces(mesh).
+  template <typename VertexIndexMap>
+  Error_code gather_targets(const Triangle_mesh& mesh, VertexIndexMap vimap, internal::dlf::Disk_problem& P,
+                            const std::vector<vertex_descriptor>& vertex_of, const std::vector<face_descriptor>& face_of)
+  {
+    namespace D = internal::dlf;
+    Discrete_lie_flow_report& R = m_report;
+    auto fail = [&R](int code, const std::string& msg) { return D::report_failure(R, code, msg); };
+
     std::map<face_descriptor, std::size_t> position;
     if(!m_face_density && !m_vertex_density && !m_options.face_density.empty()) {
       for(face_descriptor f : faces(mesh)) position.emplace(f, position.size());
@@ -329,7 +362,19 @@ private:
         return fail(Error_code(ERROR_INVALID_DENSITY), "the density of face " + face_name(mesh, vimap, face_of[f]) + " is " + std::to_string(rho));
       P.target[f] = rho * a;
     }
-    // The border loops, bhd's first; each as its border halfedges.
+    return OK;
+  }
+
+  // The border loops, bhd's first: the outer loop becomes `P.boundary`,
+  // the topology is checked, and every other loop is filled.
+  template <typename VertexIndexMap>
+  Error_code gather_loops(const Triangle_mesh& mesh, halfedge_descriptor bhd, VertexIndexMap vimap,
+                          internal::dlf::Disk_problem& P, const std::vector<face_descriptor>& face_of)
+  {
+    namespace D = internal::dlf;
+    Discrete_lie_flow_report& R = m_report;
+    auto fail = [&R](int code, const std::string& msg) { return D::report_failure(R, code, msg); };
+    const std::size_t n = P.xyz.size();
     std::vector<std::vector<halfedge_descriptor> > loops(1);
     for(halfedge_descriptor h : halfedges_around_face(bhd, mesh)) loops[0].push_back(h);
     std::set<halfedge_descriptor> walked(loops[0].begin(), loops[0].end());
@@ -386,20 +431,36 @@ private:
     return OK;
   }
 
-  std::shared_ptr<Initial_parameterizer> m_initial;
+  Initial_parameterizer m_initial;
   Discrete_lie_flow_options m_options;
   Solver_traits m_solver_traits;
   std::function<double(face_descriptor)> m_face_density;
   std::function<double(vertex_descriptor)> m_vertex_density;
-  // What the copies of a parameterizer share: the last run's report and the
-  // vertex of each index.
-  struct Shared_state
-  {
-    std::unique_ptr<Discrete_lie_flow_report> report{ new Discrete_lie_flow_report() };
-    std::vector<vertex_descriptor> vertex_of;
-  };
-  std::shared_ptr<Shared_state> m_shared;
+  // The last run: its report and the vertex of each index.
+  Discrete_lie_flow_report m_report;
+  std::vector<vertex_descriptor> m_vertex_of;
 };
+
+/// \ingroup PkgDiscreteLieFlowParameterizers
+/// CGAL's `parameterize(mesh, parameterizer, bhd, uvmap)` for a named
+/// `Discrete_lie_flow_parameterizer_3`: the generic function takes its
+/// parameterizer by value, this one runs `parameterizer` itself, so that
+/// `parameterizer.report()` describes the call. Same maps and result as the
+/// generic function.
+template <class TriangleMesh, class InitialParameterizer, class SolverTraits, class HD, class VertexUVmap>
+Error_code parameterize(TriangleMesh& mesh,
+                        Discrete_lie_flow_parameterizer_3<TriangleMesh, InitialParameterizer, SolverTraits>& parameterizer,
+                        HD bhd, VertexUVmap uvmap)
+{
+  typedef CGAL::dynamic_vertex_property_t<int> Vertex_int_tag;
+  typename boost::property_map<TriangleMesh, Vertex_int_tag>::type vimap = get(Vertex_int_tag(), mesh);
+  // A halfedge that is not on a border is reported by the parameterizer.
+  if(bhd != boost::graph_traits<TriangleMesh>::null_halfedge() && is_border(bhd, mesh))
+    internal::fill_index_map_of_cc(bhd, mesh, vimap);
+  typedef CGAL::dynamic_vertex_property_t<bool> Vertex_bool_tag;
+  typename boost::property_map<TriangleMesh, Vertex_bool_tag>::type vpmap = get(Vertex_bool_tag(), mesh);
+  return parameterizer.parameterize(mesh, bhd, uvmap, vimap, vpmap);
+}
 
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL

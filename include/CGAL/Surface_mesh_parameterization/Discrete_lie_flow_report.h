@@ -33,15 +33,40 @@ struct Discrete_lie_flow_distortion
   std::size_t degenerate_faces = 0; ///< exactly zero domain area; left out of the sums
   double min_angle_degrees = 0;     ///< smallest angle of a domain triangle
   std::size_t faces_below_1_degree = 0; ///< domain triangles with an angle below 1°
+  /// The paper's Table 1 "Wasserstein distance": `√Σ_t (S_t − Ŝ_t)²`, with
+  /// `S_t` and `Ŝ_t` the shares of face t in the (density-weighted) input area
+  /// and in the unsigned domain area (doc/design.md, "Metrics").
+  double wasserstein_table1 = 0;
+  double area_total = 0;            ///< `Σ_t |S_t − Ŝ_t|`, the reading of Table 5's Area_total in doc/design.md
+  double beltrami_mean = 0;         ///< mean over faces of |μ|, the Beltrami coefficient of the map input → domain
+  double beltrami_weighted_mean = 0; ///< `Σ w_t |μ_t|`
+  double beltrami_max = 0;          ///< largest |μ_t| (above 1 on inverted faces)
+};
+
+/// \ingroup PkgDiscreteLieFlowOptions
+/// How far apart two planar maps `a` and `b` of the same triangles are
+/// (`discrete_lie_flow_map_difference()`; doc/design.md, "Metrics"): the
+/// paper's comparison of DLF with optimal transport (its Table 6 and
+/// Figs. 17–18).
+struct Discrete_lie_flow_map_difference
+{
+  /// `√(Σ_i m_i |b_i − a_i|²)`, `m_i` the vertex's share of the
+  /// (density-weighted) input area lumped at vertices: the transport cost
+  /// of moving the measure `a` carries to `b` vertex by vertex.
+  double transport_cost = 0;
+  double beltrami_mean = 0;          ///< mean over faces of |μ| of ψ = b ∘ a⁻¹ (affine per face)
+  double beltrami_weighted_mean = 0; ///< the same weighted by the faces' shares of the input area
+  double beltrami_max = 0;           ///< largest |μ| of ψ
+  std::size_t faces_not_compared = 0; ///< faces degenerate in `a` or `b` (no Beltrami coefficient)
 };
 
 /// \ingroup PkgDiscreteLieFlowOptions
 /// What a run of the Discrete Lie Flow did, on the disk
 /// (`Discrete_lie_flow_parameterizer_3`) and on the sphere
 /// (`Discrete_lie_flow_sphere_parameterizer_3`): the same names for the same
-/// things; a field that only one of them fills says so. Shared by the copies
-/// of a parameterizer, so a named object passed by value to CGAL's
-/// `parameterize()` still sees the report of its last run.
+/// things; a field that only one of them fills says so. Each parameterizer
+/// object owns the report of its last run; CGAL's `parameterize()` called on
+/// a named `Discrete_lie_flow_parameterizer_3` runs that object, not a copy.
 struct Discrete_lie_flow_report
 {
   /// `OK`, or the error code that `parameterize()` returned.
@@ -71,6 +96,10 @@ struct Discrete_lie_flow_report
   /// The certified triangulation's (the flowing one in paper mode; with
   /// holes, the caller's faces and the fill of the holes): always 0 on success.
   std::size_t flowing_inverted_faces = 0;
+  /// Literal mode, stop reason `COLLAPSED`: the faces of the flowing
+  /// triangulation that the refused step inverted or made degenerate (exact
+  /// predicate); 0 when the step no longer moved the mesh.
+  std::size_t collapse_faces = 0;
   std::size_t rejected_by_exact_check = 0; ///< trial steps the doubles accepted and the exact predicate refused
   std::size_t factorizations = 0;          ///< numeric factorisations of the flow's sparse matrices
   std::size_t symbolic_analyses = 0;       ///< symbolic analyses (a new sparsity pattern)

@@ -36,7 +36,10 @@ namespace Surface_mesh_parameterization {
 /// \ingroup PkgDiscreteLieFlowParameterizers
 ///
 /// Area-preserving (or density-prescribed) map of a closed genus-0 triangle
-/// mesh onto the unit sphere by the Discrete Lie Flow on the sphere.
+/// mesh onto the unit sphere by the Discrete Lie Flow on the sphere (Kehua
+/// Su, Chencheng Li, Shifan Zhao, Na Lei and Xianfeng Gu, "Discrete Lie flow:
+/// A measure controllable parameterization method", Computer Aided Geometric
+/// Design 72 (2019) 49–68; \ref DLFBibSu2019 "Su et al. 2019").
 ///
 /// The initial map punctures one face, embeds the remaining disk by Tutte's
 /// barycentric map with the punctured triangle as a convex border, and lifts
@@ -53,12 +56,17 @@ namespace Surface_mesh_parameterization {
 /// re-normalised and every accepted step certified exactly. The result is
 /// never folded: every face of the caller's mesh keeps det[p, q, r] > 0.
 ///
-/// Paper mode (`Discrete_lie_flow_mode::PAPER`, the reference) runs the
-/// paper's flow from the same initial map: Delaunay edge flips of the flowing
+/// Paper mode (`Discrete_lie_flow_mode::PAPER`) runs the paper's flow,
+/// stabilised (a plateau test, a stall detector, the best iterate), from the
+/// same initial map: Delaunay edge flips of the flowing
 /// spherical triangulation before each Poisson solve, the tangential part of
 /// the potential's gradient, the same cubic step, every step certified on the
 /// flowing triangulation. Its result may fold the caller's triangles; the
-/// report counts them and holds the flowing triangulation.
+/// report counts them and holds the flowing triangulation. Literal mode
+/// (`Discrete_lie_flow_mode::LITERAL`) runs Algorithm 1 as printed from the
+/// same start: the step μ·min λ̃ or a fixed step, no safeguards, the stop
+/// rule ‖h_M − h_Ω‖² < ε, a collapse reported as the stop reason
+/// `COLLAPSED` (doc/paper_literal.md, doc/paper_errata.md).
 ///
 /// \tparam TriangleMesh_ a model of `FaceGraph` (closed, connected, genus 0, triangles)
 /// \tparam SolverTraits_ `CGAL::Eigen_solver_traits<S>` with `S` an Eigen
@@ -89,7 +97,7 @@ public:
   /// \param solver_traits the sparse SPD solver
   explicit Discrete_lie_flow_sphere_parameterizer_3(const Discrete_lie_flow_options& options = Discrete_lie_flow_options(),
                                                     Solver_traits solver_traits = Solver_traits())
-    : m_options(options), m_solver_traits(solver_traits), m_report(std::make_shared<Discrete_lie_flow_report>())
+    : m_options(options), m_solver_traits(solver_traits)
   {}
 
   /// The flow settings, to read or change before `parameterize()`.
@@ -97,8 +105,8 @@ public:
   /// The flow settings.
   const Discrete_lie_flow_options& options() const { return m_options; }
 
-  /// The report of the last run (shared by all copies of this object).
-  const Discrete_lie_flow_report& report() const { return *m_report; }
+  /// The report of this object's last run (each copy owns its own).
+  const Discrete_lie_flow_report& report() const { return m_report; }
 
   /// Sets a per-face density ρ > 0 (a readable property map, `face_descriptor`
   /// → number): the sphere area of a face becomes proportional to ρ·area.
@@ -143,8 +151,8 @@ public:
     std::vector<face_descriptor> face_of;
     const Error_code code = parameterize(std::as_const(mesh), sphere_map, vertex_of, face_of);
     if(code == OK)
-      internal::dlf::store_area_elements(mesh, vertex_of, m_report->target_area, m_report->domain_area, face_of,
-                                         m_report->face_density);
+      internal::dlf::store_area_elements(mesh, vertex_of, m_report.target_area, m_report.domain_area, face_of,
+                                         m_report.face_density);
     return code;
   }
 
@@ -155,9 +163,9 @@ public:
   {
     std::size_t i = 0;
     for(vertex_descriptor v : vertices(mesh)) {
-      if(i >= m_report->target_area.size()) break;
-      put(target, v, m_report->target_area[i]);
-      put(domain, v, m_report->domain_area[i]);
+      if(i >= m_report.target_area.size()) break;
+      put(target, v, m_report.target_area[i]);
+      put(domain, v, m_report.domain_area[i]);
       ++i;
     }
   }
@@ -168,7 +176,7 @@ private:
                           std::vector<face_descriptor>& face_of)
   {
     namespace D = internal::dlf;
-    Discrete_lie_flow_report& R = *m_report;
+    Discrete_lie_flow_report& R = m_report;
     R = Discrete_lie_flow_report();
     if(faces(mesh).empty()) return D::report_failure(R, ERROR_EMPTY_MESH, "the mesh has no faces");
     // Index the vertices in iteration order, and gather the faces.
@@ -214,7 +222,7 @@ private:
   Solver_traits m_solver_traits;
   std::function<double(face_descriptor)> m_face_density;
   std::function<double(vertex_descriptor)> m_vertex_density;
-  std::shared_ptr<Discrete_lie_flow_report> m_report;
+  Discrete_lie_flow_report m_report;
 };
 
 /// \ingroup PkgDiscreteLieFlowParameterizers

@@ -51,6 +51,21 @@ inline double area_residual(std::size_t n, const std::vector<Face>& faces, const
   return r / (so * so);
 }
 
+/// Algorithm 1's mismatch ‖h_M − h_Ω‖² between two per-vertex area
+/// elements, each in units of its own mean: the mean squared relative
+/// mismatch n · Σ_i (a_i/Σa − b_i/Σb)² (doc/paper_errata.md, "Stop rule").
+inline double normalized_mismatch(const std::vector<double>& a, const std::vector<double>& b)
+{
+  double sa = 0, sb = 0;
+  for(std::size_t i = 0; i < a.size(); ++i) { sa += a[i]; sb += b[i]; }
+  double s = 0;
+  for(std::size_t i = 0; i < a.size(); ++i) {
+    const double e = a[i] / sa - b[i] / sb;
+    s += e * e;
+  }
+  return double(a.size()) * s;
+}
+
 /// D_area of domain areas `u` against targets (both per face; u > 0):
 /// exactly the metric `d_area` of doc/design.md. +∞ if some u ≤ 0.
 inline double d_area_of(const std::vector<double>& u, const std::vector<double>& target)

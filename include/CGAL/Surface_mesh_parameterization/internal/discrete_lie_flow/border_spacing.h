@@ -82,6 +82,55 @@ inline std::vector<int> nearest_border_vertex(const Disk_problem& P)
   return owner;
 }
 
+/// Tutte's matrix over the interior vertices of `P` (the number of
+/// neighbours on the diagonal, −1 for each interior neighbour). `interior`
+/// numbers the interior vertices (−1 on the border), `neighbours` lists each
+/// vertex's neighbours without repeats; returns the number of interior vertices.
+inline int tutte_interior_matrix(const Disk_problem& P, std::size_t n, std::vector<int>& interior,
+                                 std::vector<std::vector<int> >& neighbours, Sparse_matrix& A)
+{
+  interior.assign(n, -1);
+  int ni = 0;
+  std::vector<char> on_border(n, 0);
+  for(int b : P.boundary) on_border[std::size_t(b)] = 1;
+  for(std::size_t v = 0; v < n; ++v)
+    if(!on_border[v]) interior[v] = ni++;
+  neighbours.assign(n, std::vector<int>());
+  for(const Face& f : P.faces)
+    for(int k = 0; k < 3; ++k) {
+      const int a = f[k], b = f[(k + 1) % 3];
+      neighbours[std::size_t(a)].push_back(b);
+      neighbours[std::size_t(b)].push_back(a);
+    }
+  std::vector<Eigen::Triplet<double> > triplets;
+  for(std::size_t v = 0; v < n; ++v) {
+    std::vector<int>& nv = neighbours[v];
+    std::sort(nv.begin(), nv.end());
+    nv.erase(std::unique(nv.begin(), nv.end()), nv.end());
+    if(interior[v] < 0) continue;
+    triplets.emplace_back(interior[v], interior[v], double(nv.size()));
+    for(int w : nv)
+      if(interior[std::size_t(w)] >= 0) triplets.emplace_back(interior[v], interior[std::size_t(w)], -1.);
+  }
+  A.resize(ni, ni);
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  return ni;
+}
+
+/// Each border vertex's share of the total target: a third of each face
+/// per corner, given to the corner's `owner` (above).
+inline std::vector<double> border_target_shares(const Disk_problem& P, const std::vector<int>& owner)
+{
+  std::vector<double> share(P.boundary.size(), 0.);
+  double total = 0;
+  for(std::size_t t = 0; t < P.faces.size(); ++t) {
+    for(int k = 0; k < 3; ++k) share[std::size_t(owner[std::size_t(P.faces[t][k])])] += P.target[t] / 3;
+    total += P.target[t];
+  }
+  for(double& s : share) s /= total;
+  return share;
+}
+
 /// Tutte's map of `P` with its border on the circle of `curve`, spaced by
 /// area (above). Replaces `uv` when one of the candidates is an embedding
 /// (exact predicate) whose barrier energy E is below `gain` times `uv`'s;
@@ -94,49 +143,18 @@ bool respace_border_by_area(const Disk_problem& P, std::vector<Vec2>& uv, Bounda
 {
   const std::size_t n = uv.size(), nb = P.boundary.size();
   if(curve.kind() != Discrete_lie_flow_border::CIRCLE || nb < 3) return false;
-  std::vector<int> interior(n, -1);
-  int ni = 0;
-  {
-    std::vector<char> on_border(n, 0);
-    for(int b : P.boundary) on_border[std::size_t(b)] = 1;
-    for(std::size_t v = 0; v < n; ++v)
-      if(!on_border[v]) interior[v] = ni++;
-  }
+  std::vector<int> interior;
+  std::vector<std::vector<int> > neighbours;
+  Sparse_matrix A;
+  const int ni = tutte_interior_matrix(P, n, interior, neighbours, A);
   if(ni == 0) return false;
-  // Tutte's matrix over the interior (the number of neighbours on the
-  // diagonal) and the border's columns, from the edges of the faces.
-  std::vector<std::vector<int> > neighbours(n);
-  for(const Face& f : P.faces)
-    for(int k = 0; k < 3; ++k) {
-      const int a = f[k], b = f[(k + 1) % 3];
-      neighbours[std::size_t(a)].push_back(b);
-      neighbours[std::size_t(b)].push_back(a);
-    }
-  std::vector<Eigen::Triplet<double> > triplets;
-  for(std::size_t v = 0; v < n; ++v) {
-    if(interior[v] < 0) continue;
-    std::vector<int>& nv = neighbours[v];
-    std::sort(nv.begin(), nv.end());
-    nv.erase(std::unique(nv.begin(), nv.end()), nv.end());
-    triplets.emplace_back(interior[v], interior[v], double(nv.size()));
-    for(int w : nv)
-      if(interior[std::size_t(w)] >= 0) triplets.emplace_back(interior[v], interior[std::size_t(w)], -1.);
-  }
-  Sparse_matrix A(ni, ni);
-  A.setFromTriplets(triplets.begin(), triplets.end());
   EigenSolver solver;
   solver.compute(A);
   if(solver.info() != Eigen::Success) return false;
 
   // What each border vertex owns: a third of each face per corner.
   const std::vector<int> owner = nearest_border_vertex(P);
-  std::vector<double> target_share(nb, 0.);
-  double total_target = 0;
-  for(std::size_t t = 0; t < P.faces.size(); ++t) {
-    for(int k = 0; k < 3; ++k) target_share[std::size_t(owner[std::size_t(P.faces[t][k])])] += P.target[t] / 3;
-    total_target += P.target[t];
-  }
-  for(double& s : target_share) s /= total_target;
+  const std::vector<double> target_share = border_target_shares(P, owner);
 
   const Area_barrier_energy energy(P.target);
   std::vector<double> u;

@@ -19,6 +19,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_problem.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/distortion.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow_driver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/literal_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/planar_certified_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/planar_paper_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/solver_threads.h>
@@ -75,6 +76,7 @@ inline void report_outcome(Flow_outcome& out, Discrete_lie_flow_report& R)
   R.final_residual = out.final_residual;
   R.flips = out.flips;
   R.rejected_by_exact_check = out.rejected_by_exact_check;
+  R.collapse_faces = out.collapse_faces;
   R.factorizations = out.factorizations;
   R.symbolic_analyses = out.symbolic_analyses;
   R.seconds_assembly = out.seconds_assembly;
@@ -105,11 +107,53 @@ inline Error_code report_verdict(const Flow_outcome& out, Discrete_lie_flow_repo
   R.status = OK;
   if(out.stop_reason == Discrete_lie_flow_stop_reason::CONVERGED) {
     R.message = "Success";
+  } else if(out.stop_reason == Discrete_lie_flow_stop_reason::COLLAPSED) {
+    // The literal mode's documented failure (the paper's "c").
+    std::ostringstream s;
+    s << std::setprecision(6) << "collapsed: the step of iteration " << out.iterations + 1 << " "
+      << (out.collapse_faces > 0 ? "folds or degenerates " + std::to_string(out.collapse_faces) + " faces of the flowing mesh"
+                                 : std::string("no longer moves the mesh (or runs a border vertex off its side)"))
+      << "; the last fold-free iterate is returned, d_area " << out.final_d_area;
+    R.message = s.str();
   } else {
     std::ostringstream s;
     s << std::setprecision(6) << "not converged: a valid, fold-free map, stopped (" << discrete_lie_flow_stop_reason_name(out.stop_reason)
       << ") after " << out.iterations << " iterations at d_area " << out.final_d_area;
     R.message = s.str();
+  }
+  return OK;
+}
+
+/// Orients `P` as the initial map `uv`: faces and border loop counter-clockwise
+/// in the domain. Fails, naming the first bad face, unless every face then
+/// has a positive area. `loop` receives the border positions in order.
+inline Error_code orient_to_initial_map(Disk_problem& P, const std::vector<Vec2>& uv, std::vector<Vec2>& loop,
+                                        Discrete_lie_flow_report& R)
+{
+  // Some border parameterizers run clockwise: the flow then works on the
+  // faces with their index order reversed.
+  Orientation_count oc = count_orientations_2(uv, P.faces);
+  if(oc.inverted * 2 > P.faces.size()) {
+    for(Face& f : P.faces) std::swap(f[1], f[2]);
+    oc = count_orientations_2(uv, P.faces);
+  }
+  if(!oc.all_positive()) {
+    const Face& f = P.faces[std::size_t(oc.first_bad)];
+    std::ostringstream s;
+    s << "the initial map has " << oc.inverted << " inverted and " << oc.degenerate
+      << " degenerate triangles; first: face " << oc.first_bad << " (vertices " << f[0] << ", " << f[1] << ", " << f[2] << ")";
+    return report_failure(R, ERROR_INITIAL_MAP_FOLDED, s.str());
+  }
+  loop.resize(P.boundary.size());
+  for(std::size_t k = 0; k < loop.size(); ++k) loop[k] = uv[std::size_t(P.boundary[k])];
+  double twice = 0;
+  for(std::size_t k = 0; k < loop.size(); ++k) {
+    const Vec2 &a = loop[k], &b = loop[(k + 1) % loop.size()];
+    twice += a[0] * b[1] - a[1] * b[0];
+  }
+  if(twice < 0) {
+    std::reverse(P.boundary.begin(), P.boundary.end());
+    std::reverse(loop.begin(), loop.end());
   }
   return OK;
 }
@@ -129,34 +173,13 @@ Error_code flow_disk(Disk_problem& P, std::vector<Vec2>& uv, const Discrete_lie_
   R.vertices = P.caller_vertices();
   R.faces = P.caller_faces();
   R.holes = P.holes;
-  if(holes && opt.mode == Discrete_lie_flow_mode::PAPER)
-    return report_failure(R, ERROR_NO_TOPOLOGICAL_DISC, "the paper mode takes disks only (the mesh has " +
+  if(holes && opt.mode != Discrete_lie_flow_mode::CERTIFIED)
+    return report_failure(R, ERROR_NO_TOPOLOGICAL_DISC, std::string("the ") + discrete_lie_flow_mode_name(opt.mode) +
+                          " mode takes disks only (the mesh has " +
                           std::to_string(P.holes) + (P.holes == 1 ? " hole" : " holes") + "); the certified mode fills them");
-  // Some border parameterizers run clockwise: the flow then works on the
-  // faces with their index order reversed.
-  Orientation_count oc = count_orientations_2(uv, P.faces);
-  if(oc.inverted * 2 > P.faces.size()) {
-    for(Face& f : P.faces) std::swap(f[1], f[2]);
-    oc = count_orientations_2(uv, P.faces);
-  }
-  if(!oc.all_positive()) {
-    const Face& f = P.faces[std::size_t(oc.first_bad)];
-    std::ostringstream s;
-    s << "the initial map has " << oc.inverted << " inverted and " << oc.degenerate
-      << " degenerate triangles; first: face " << oc.first_bad << " (vertices " << f[0] << ", " << f[1] << ", " << f[2] << ")";
-    return report_failure(R, ERROR_INITIAL_MAP_FOLDED, s.str());
-  }
-  std::vector<Vec2> loop(P.boundary.size());
-  for(std::size_t k = 0; k < loop.size(); ++k) loop[k] = uv[std::size_t(P.boundary[k])];
-  double twice = 0;
-  for(std::size_t k = 0; k < loop.size(); ++k) {
-    const Vec2 &a = loop[k], &b = loop[(k + 1) % loop.size()];
-    twice += a[0] * b[1] - a[1] * b[0];
-  }
-  if(twice < 0) {
-    std::reverse(P.boundary.begin(), P.boundary.end());
-    std::reverse(loop.begin(), loop.end());
-  }
+  std::vector<Vec2> loop;
+  const Error_code oriented = orient_to_initial_map(P, uv, loop, R);
+  if(oriented != OK) return oriented;
   Boundary_curve curve(loop, opt.disk.border);
   R.border = curve.kind();
   const std::vector<Face> caller_faces = caller_part(P.faces, P);
@@ -167,6 +190,9 @@ Error_code flow_disk(Disk_problem& P, std::vector<Vec2>& uv, const Discrete_lie_
   Flow_outcome out;
   if(opt.mode == Discrete_lie_flow_mode::PAPER) {
     Planar_paper_flow<EigenSolver> flow(P, uv, curve, opt, solver, Paper_flow_settings());
+    out = run_flow(flow, opt);
+  } else if(opt.mode == Discrete_lie_flow_mode::LITERAL) {
+    Planar_literal_flow<EigenSolver> flow(P, uv, curve, opt, solver);
     out = run_flow(flow, opt);
   } else {
     // On the circle, when Tutte's map spaced by area (border_spacing.h) has

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -32,6 +33,33 @@ inline double min_angle_3(const Vec3& a, const Vec3& b, const Vec3& c)
     m = (std::min)(m, std::atan2(norm3(cross(u, v)), dot(u, v)));
   }
   return m;
+}
+
+/// |μ| of the affine map taking the planar triangle a to the planar triangle
+/// b: with J its Jacobian, f_z = ½(J00 + J11) + ½i(J10 − J01) and
+/// f_z̄ = ½(J00 − J11) + ½i(J10 + J01). −1 when a or b is degenerate.
+inline double affine_beltrami(const Vec2& a0, const Vec2& a1, const Vec2& a2,
+                              const Vec2& b0, const Vec2& b1, const Vec2& b2)
+{
+  const double a00 = a1[0] - a0[0], a01 = a2[0] - a0[0], a10 = a1[1] - a0[1], a11 = a2[1] - a0[1];
+  const double b00 = b1[0] - b0[0], b01 = b2[0] - b0[0], b10 = b1[1] - b0[1], b11 = b2[1] - b0[1];
+  const double da = a00 * a11 - a01 * a10, db = b00 * b11 - b01 * b10;
+  if(da == 0 || db == 0 || !std::isfinite(da) || !std::isfinite(db)) return -1;
+  // J = B A⁻¹; the common factor 1/da cancels in the ratio.
+  const double j00 = b00 * a11 - b01 * a10, j01 = -b00 * a01 + b01 * a00;
+  const double j10 = b10 * a11 - b11 * a10, j11 = -b10 * a01 + b11 * a00;
+  const double fz = std::hypot(j00 + j11, j10 - j01), fzbar = std::hypot(j00 - j11, j10 + j01);
+  return fz > 0 ? fzbar / fz : std::numeric_limits<double>::infinity();
+}
+
+/// The third corner of the triangle (a, b, c) in its own plane, with a at
+/// the origin and b on the positive x axis (c above it).
+inline Vec2 in_plane(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const Vec3 u = sub(b, a), v = sub(c, a);
+  const double lu = norm3(u);
+  if(!(lu > 0)) return {{ 0., 0. }};
+  return {{ dot(u, v) / lu, norm3(cross(u, v)) / lu }};
 }
 
 /// Metrics of the map xyz → dom over `faces`. `dom` holds domain points in 3D
@@ -62,8 +90,14 @@ Distortion_metrics distortion_metrics(const std::vector<Vec3>& xyz, const std::v
   const int majority = balance >= 0 ? 1 : -1;
   const double scale2 = sumAd > 0 ? sumA / sumAd : 1.; // s² with s the uniform domain scale
   double min_angle = M_PI;
-  double log_sum = 0, log_sq = 0;
+  double log_sum = 0, log_sq = 0, beltrami_sum = 0;
   std::size_t counted = 0;
+  for(std::size_t f = 0; f < F; ++f) {
+    const double share_in = A[f] / sumA, share_out = sumAd > 0 ? Ad[f] / sumAd : 0.;
+    m.wasserstein_table1 += (share_in - share_out) * (share_in - share_out);
+    m.area_total += std::abs(share_in - share_out);
+  }
+  m.wasserstein_table1 = std::sqrt(m.wasserstein_table1);
   for(std::size_t f = 0; f < F; ++f) {
     const Face& t = faces[f];
     if(sgn[f] == 0 || Ad[f] == 0 || A[f] == 0) { ++m.degenerate_faces; continue; }
@@ -93,6 +127,17 @@ Distortion_metrics distortion_metrics(const std::vector<Vec3>& xyz, const std::v
     const double s2signed = inverted ? -s2 : s2;
     m.arap += w * ((s1 - 1) * (s1 - 1) + (s2signed - 1) * (s2signed - 1));
     m.symmetric_dirichlet += s1 * s1 + 1 / (s1 * s1) + s2 * s2 + 1 / (s2 * s2);
+    // |μ| = |f_z̄| / |f_z| = (σ1 − σ2) / (σ1 + σ2) with σ2 signed, computed from
+    // the triangles in their own planes (the σ above lose half the digits
+    // near a conformal map); an inverted face is mirrored, so |μ| > 1.
+    const Vec2 q2d[3] = { {{ 0., 0. }}, {{ norm3(sub(q1, q0)), 0. }}, in_plane(q0, q1, q2) };
+    Vec2 p2d[3] = { {{ 0., 0. }}, {{ norm3(sub(p1, p0)), 0. }}, in_plane(p0, p1, p2) };
+    if(inverted) p2d[2][1] = -p2d[2][1];
+    double mu = affine_beltrami(q2d[0], q2d[1], q2d[2], p2d[0], p2d[1], p2d[2]);
+    if(mu < 0) mu = std::numeric_limits<double>::infinity(); // a sliver flattened by rounding
+    beltrami_sum += mu;
+    m.beltrami_weighted_mean += w * mu;
+    m.beltrami_max = (std::max)(m.beltrami_max, mu);
     const double la = std::log(det);
     log_sum += std::abs(la);
     log_sq += la * la;
@@ -105,6 +150,7 @@ Distortion_metrics distortion_metrics(const std::vector<Vec3>& xyz, const std::v
   if(counted > 0) {
     m.log_area_mean_abs = log_sum / double(counted);
     m.log_area_rms = std::sqrt(log_sq / double(counted));
+    m.beltrami_mean = beltrami_sum / double(counted);
   }
   m.min_angle_degrees = min_angle * 180 / M_PI;
   return m;
@@ -132,6 +178,46 @@ inline Distortion_metrics spherical_distortion(const std::vector<Vec3>& xyz, con
     const Face& t = faces[f];
     return int(exact_orientation_sphere(sph[t[0]], sph[t[1]], sph[t[2]]));
   });
+}
+
+/// The difference of the planar maps `a` and `b` of `faces` over `xyz`.
+inline Discrete_lie_flow_map_difference map_difference(const std::vector<Vec3>& xyz, const std::vector<Vec2>& a,
+                                                       const std::vector<Vec2>& b, const std::vector<Face>& faces,
+                                                       const std::vector<double>& density = std::vector<double>())
+{
+  Discrete_lie_flow_map_difference d;
+  std::vector<double> mass(xyz.size(), 0.), area(faces.size());
+  double total = 0;
+  for(std::size_t f = 0; f < faces.size(); ++f) {
+    const Face& t = faces[f];
+    area[f] = (density.empty() ? 1. : density[f]) * triangle_area_3(xyz[t[0]], xyz[t[1]], xyz[t[2]]);
+    for(int k = 0; k < 3; ++k) mass[std::size_t(t[k])] += area[f] / 3;
+    total += area[f];
+  }
+  if(!(total > 0)) return d;
+  double cost = 0;
+  for(std::size_t i = 0; i < xyz.size(); ++i) {
+    const double dx = b[i][0] - a[i][0], dy = b[i][1] - a[i][1];
+    cost += mass[i] / total * (dx * dx + dy * dy);
+  }
+  d.transport_cost = std::sqrt(cost);
+  double sum = 0, weight = 0;
+  std::size_t counted = 0;
+  for(std::size_t f = 0; f < faces.size(); ++f) {
+    const Face& t = faces[f];
+    const double mu = affine_beltrami(a[t[0]], a[t[1]], a[t[2]], b[t[0]], b[t[1]], b[t[2]]);
+    if(mu < 0) { ++d.faces_not_compared; continue; }
+    sum += mu;
+    d.beltrami_weighted_mean += area[f] / total * mu;
+    weight += area[f] / total;
+    d.beltrami_max = (std::max)(d.beltrami_max, mu);
+    ++counted;
+  }
+  if(counted > 0) {
+    d.beltrami_mean = sum / double(counted);
+    d.beltrami_weighted_mean /= weight;
+  }
+  return d;
 }
 
 } // namespace dlf

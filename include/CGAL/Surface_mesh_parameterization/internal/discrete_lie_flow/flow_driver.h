@@ -1,12 +1,12 @@
 // Copyright (c) 2026 The Discrete Lie Flow authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The one loop of every flow (planar and spherical, certified and paper):
+// The one loop of every flow (planar and spherical; certified, paper and literal):
 // direction; bound by the smallest critical root; search with exact
 // certification; commit; post-step (flips or relaxation sweeps); record;
 // stop. What differs between the four flows lives in their policies
 // (planar_certified_flow.h, planar_paper_flow.h, sphere_certified_flow.h,
-// sphere_paper_flow.h); the loop and the policy interface are described in
+// sphere_paper_flow.h, literal_flow.h); the loop and the policy interface are described in
 // doc/design.md, "The flow driver".
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_FLOW_DRIVER_H
@@ -36,6 +36,7 @@ struct Flow_outcome
   double final_residual = 0;
   std::size_t flips = 0;      ///< paper mode: edge flips in total
   std::size_t rejected_by_exact_check = 0; ///< trial steps the doubles accepted and the exact predicate refused
+  std::size_t collapse_faces = 0; ///< literal mode: flowing faces the refused step folded or degenerated
   std::size_t factorizations = 0, symbolic_analyses = 0;
   bool solver_failed = false;
   /// Time split of the iterations (seconds): assembly, factorisation + solve, step search and post-step.
@@ -71,6 +72,7 @@ struct Flow_step
   std::size_t halvings = 0;          ///< step halvings before acceptance
   std::size_t flips = 0;             ///< edge flips of this iteration (paper modes)
   bool accepted = false;
+  bool collapsed = false;            ///< not accepted because the step collapses the mesh (literal mode)
 };
 
 /// What a policy's direction phase found.
@@ -284,7 +286,7 @@ Flow_outcome run_flow(Policy& policy, const Discrete_lie_flow_options& opt)
       policy.search(step, out);
       if(step.accepted) policy.commit(step, out);
     }
-    if(!step.accepted) { out.stop_reason = R::STALLED; break; }
+    if(!step.accepted) { out.stop_reason = step.collapsed ? R::COLLAPSED : R::STALLED; break; }
     out.iterations = it;
     if(!record_iteration(opt, it, step, policy.d_area(), std::chrono::duration<double>(Clock::now() - start).count(),
                          [&] { return policy.residual(); }, out)) {

@@ -74,6 +74,15 @@ struct Planar_flow_settings
   bool coupled_metric = false;
   double coupled_when_slower = 0.5;
   std::size_t coupled_window = 10;
+  /// The coupled metric's factorisation is kept for the next directions
+  /// while a step takes off at least `coupled_reuse_gain` times the share
+  /// of D_area − 2 that the step right after the factorisation took off,
+  /// and for at most `coupled_reuse_age` directions (1: factorise every
+  /// time). A metric of a nearby map is still positive definite, so its
+  /// direction still descends; a solve costs a fraction of a factorisation
+  /// (doc/certified_mode.md, "Long seams and thin disks").
+  double coupled_reuse_gain = 0.7;
+  std::size_t coupled_reuse_age = 8;
 };
 
 /// The planar certified flow as a policy of `run_flow()` (flow_driver.h).
@@ -133,10 +142,9 @@ public:
     if(!m_newton && m_settings.newton_below > 0 && m_E < m_settings.newton_below &&
        m_E - 2 > m_settings.newton_when_slower * (m_E_before - 2))
       m_newton = true;
-    ++out.factorizations;
-    if(m_newton) newton_direction(out);
-    else if(m_coupled) coupled_sobolev_direction(out);
-    else sobolev_direction(out);
+    if(m_newton) { ++out.factorizations; newton_direction(out); }
+    else if(m_coupled) coupled_sobolev_direction(out); // counts its own
+    else { ++out.factorizations; sobolev_direction(out); }
     m_slope = m_gr.dot(m_d);
     if(!(m_slope < 0)) { m_d = -m_gr; m_slope = -m_gr.squaredNorm(); }
     return m_slope < 0 ? Direction_status::DESCENT : Direction_status::NO_DESCENT;
@@ -241,14 +249,26 @@ private:
   /// (exact border block), factorised by the Gauss–Newton tail's solver.
   void coupled_sobolev_direction(Flow_outcome& out)
   {
-    const Sparse_matrix* S;
-    {
-      Scoped_timer timer(out.seconds_assembly);
-      S = &m_newton_system.metric(m_uv, m_P.faces, m_basis);
+    // The share of D_area − 2 the last step took off.
+    const double gain = m_E_history.empty() ? 0 : (m_E_before - m_E) / (m_E_before - 2);
+    if(m_coupled_age == 1) m_fresh_gain = gain;
+    const bool fresh = m_coupled_age == 0 || m_coupled_age >= m_settings.coupled_reuse_age ||
+                       !(gain >= m_settings.coupled_reuse_gain * m_fresh_gain);
+    m_coupled_age = fresh ? 1 : m_coupled_age + 1;
+    if(fresh) {
+      const Sparse_matrix* S;
+      {
+        Scoped_timer timer(out.seconds_assembly);
+        S = &m_newton_system.metric(m_uv, m_P.faces, m_basis);
+      }
+      ++out.factorizations;
+      Scoped_timer timer(out.seconds_solve);
+      if(!m_newton_solver.factorize(*S)) m_coupled_age = 0;
     }
     Scoped_timer timer(out.seconds_solve);
-    if(!(m_newton_solver.factorize(*S) && m_newton_solver.solve(-m_gr, m_d))) {
+    if(m_coupled_age == 0 || !m_newton_solver.solve(-m_gr, m_d)) {
       out.solver_failed = true;
+      m_coupled_age = 0;
       m_d = -m_gr;
     }
   }
@@ -327,6 +347,8 @@ private:
   const Density_levels m_levels;     // the caller's faces only
   const Area_barrier_energy m_caller_energy; // D_area of the caller's faces (holes)
   bool m_coupled;
+  std::size_t m_coupled_age = 0; // directions since the coupled factorisation (0: none held)
+  double m_fresh_gain = 0;
   std::vector<double> m_E_history; // E after each iteration, from the start
 };
 

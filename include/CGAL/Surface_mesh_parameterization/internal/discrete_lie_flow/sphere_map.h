@@ -15,6 +15,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/distortion.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow_driver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/literal_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_certified_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_initial_map.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_paper_flow.h>
@@ -72,6 +73,10 @@ Error_code map_to_sphere(Sphere_problem& P, std::vector<Vec3>& points, const Dis
   Flow_outcome out;
   if(opt.mode == Discrete_lie_flow_mode::PAPER) {
     Sphere_paper_flow<EigenSolver> flow(P, p, opt, solver);
+    out = run_flow(flow, opt);
+    R.flowing_non_delaunay_edges = flow.non_delaunay_edges();
+  } else if(opt.mode == Discrete_lie_flow_mode::LITERAL) {
+    Sphere_literal_flow<EigenSolver> flow(P, p, opt, solver);
     out = run_flow(flow, opt);
     R.flowing_non_delaunay_edges = flow.non_delaunay_edges();
   } else {
