@@ -826,7 +826,7 @@ bool is_violation(const json& r, std::string& what)
 int main(int argc, char** argv)
 {
   namespace po = boost::program_options;
-  std::string dlf, data, scratch, json_out, md_out, only;
+  std::string dlf, data, scratch, json_out, md_out, only, corpus_only;
   double timeout;
   bool no_cgal = false;
   po::options_description desc("robustness_corpus: hostile-input study of dlf and CGAL's parameterizers");
@@ -838,11 +838,25 @@ int main(int argc, char** argv)
     ("markdown", po::value(&md_out)->default_value(""), "write the tables as Markdown")
     ("timeout", po::value(&timeout)->default_value(60.0), "seconds per run")
     ("only", po::value(&only)->default_value(""), "run only the classes whose name contains this")
-    ("no-cgal", po::bool_switch(&no_cgal), "skip CGAL's parameterizers");
+    ("no-cgal", po::bool_switch(&no_cgal), "skip CGAL's parameterizers")
+    ("corpus-only", po::value(&corpus_only)->value_name("DIR"),
+     "write the mesh cases (not the library-API ones) as DIR/disk/*.off and DIR/sphere/*.off, by the command "
+     "each is meant for, run nothing (for dlf-study, benchmark/robustness_study.sh)");
   po::variables_map vm;
   try { po::store(po::parse_command_line(argc, argv, desc), vm); po::notify(vm); }
   catch(const std::exception& e) { std::cerr << "robustness_corpus: " << e.what() << "\n"; return 1; }
   if(vm.count("help")) { std::cout << desc << "\n"; return 0; }
+  if(!corpus_only.empty()) {
+    std::size_t written = 0;
+    for(const Case& c : make_corpus(data)) {
+      if(c.kind == "api" || (!only.empty() && c.cls.find(only) == std::string::npos)) continue;
+      fs::create_directories(corpus_only + "/" + c.kind);
+      std::ofstream(corpus_only + "/" + c.kind + "/" + c.cls + "__" + c.name + ".off", std::ios::binary) << c.text;
+      ++written;
+    }
+    std::cout << "robustness_corpus: " << written << " cases written under " << corpus_only << "\n";
+    return 0;
+  }
   dlf = fs::absolute(dlf).string();
   fs::create_directories(scratch + "/corpus");
   fs::create_directories(scratch + "/run");

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <set>
 #include <sstream>
@@ -54,26 +55,12 @@ std::vector<std::pair<double, int> > read_numbers(const std::string& path)
 
 Density_setup read_density_file(const Indexed_mesh& mesh, const std::string& path)
 {
-  const std::vector<std::pair<double, int> > values = read_numbers(path);
-  const std::size_t F = mesh.faces.size(), V = mesh.xyz.size();
-  Density_setup d;
-  // A disk has about twice as many faces as vertices; if the counts agree, faces win.
-  if(values.size() == F) d.source = "face";
-  else if(values.size() == V) d.source = "vertex";
-  else
-    throw Cli_error(quoted(path) + ": " + std::to_string(values.size()) + " values; expected " + std::to_string(F) +
-                    " (one per face) or " + std::to_string(V) + " (one per vertex)");
-  for(std::size_t k = 0; k < values.size(); ++k)
-    if(!(values[k].first > 0) || !std::isfinite(values[k].first))
-      throw Cli_error(quoted(path) + ": line " + std::to_string(values[k].second) + ": the density of " + d.source + " " +
-                      std::to_string(k) + " is " + number(values[k].first) + " (densities must be positive and finite)");
-  d.face_density.resize(F);
-  for(std::size_t f = 0; f < F; ++f) {
-    const Triangle& t = mesh.faces[f];
-    d.face_density[f] = d.source == "face" ? values[f].first
-                      : (values[std::size_t(t[0])].first + values[std::size_t(t[1])].first + values[std::size_t(t[2])].first) / 3;
-  }
-  return d;
+  const std::vector<std::pair<double, int> > numbered = read_numbers(path);
+  std::vector<double> values;
+  for(const std::pair<double, int>& v : numbered) values.push_back(v.first);
+  return density_of_values(mesh, values, [&](std::size_t k) {
+    return quoted(path) + (k < numbered.size() ? ": line " + std::to_string(numbered[k].second) : std::string());
+  });
 }
 
 std::vector<long> read_indices(std::istream& in, const std::string& path, int line_number)
@@ -132,6 +119,30 @@ std::vector<int> read_selection(const std::string& path, const Indexed_mesh& mes
     throw Cli_error(quoted(path) + ": selects no face (its face line is empty, and no face has its 3 vertices on its "
                     "vertex line)");
   return std::vector<int>(faces.begin(), faces.end());
+}
+
+Density_setup density_of_values(const Indexed_mesh& mesh, const std::vector<double>& values,
+                                const std::function<std::string(std::size_t)>& where)
+{
+  const std::size_t F = mesh.faces.size(), V = mesh.xyz.size();
+  Density_setup d;
+  // A disk has about twice as many faces as vertices; if the counts agree, faces win.
+  if(values.size() == F) d.source = "face";
+  else if(values.size() == V) d.source = "vertex";
+  else
+    throw Cli_error(where(values.size()) + ": " + std::to_string(values.size()) + " values; expected " + std::to_string(F) +
+                    " (one per face) or " + std::to_string(V) + " (one per vertex)");
+  for(std::size_t k = 0; k < values.size(); ++k)
+    if(!(values[k] > 0) || !std::isfinite(values[k]))
+      throw Cli_error(where(k) + ": the density of " + d.source + " " + std::to_string(k) + " is " + number(values[k]) +
+                      " (densities must be positive and finite)");
+  d.face_density.resize(F);
+  for(std::size_t f = 0; f < F; ++f) {
+    const Triangle& t = mesh.faces[f];
+    d.face_density[f] = d.source == "face" ? values[f]
+                      : (values[std::size_t(t[0])] + values[std::size_t(t[1])] + values[std::size_t(t[2])]) / 3;
+  }
+  return d;
 }
 
 Density_setup make_density(const Indexed_mesh& mesh, const Disk_settings& s)

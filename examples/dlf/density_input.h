@@ -12,6 +12,8 @@
 #include "mesh_input.h"
 
 #include <array>
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -44,6 +46,13 @@ const double region_share_tolerance = 0.01;
 /// fills each region's prescribed share. Throws `Cli_error` naming the file,
 /// value or region at fault.
 Density_setup make_density(const Indexed_mesh& mesh, const Disk_settings& settings);
+
+/// The density of one value per face, or per vertex (a face takes the mean
+/// of its corners; faces win when the counts agree), each > 0 and finite;
+/// `where(k)` names the k-th value (or, for k == values.size(), the whole)
+/// in messages. Throws `Cli_error`.
+Density_setup density_of_values(const Indexed_mesh& mesh, const std::vector<double>& values,
+                                const std::function<std::string(std::size_t)>& where);
 
 /// The faces a CGAL selection file selects: its face line (line 2), or, when
 /// that is empty, the faces whose three vertices its vertex line (line 1)

@@ -7,6 +7,7 @@
 #include "cli_error.h"
 #include "commands.h"
 #include "density_input.h"
+#include "disk_outcome.h"
 #include "disk_pictures.h"
 #include "disk_run.h"
 #include "metrics.h"
@@ -113,7 +114,8 @@ json seam_json(const Disk_settings& s, const Seam_cut& cut)
 }
 
 // The command's own time around the library's run: reading the input,
-// checking its topology (and preparing a density), writing the -o map.
+// checking it (topology, density, the metrics of a failed run), writing the
+// -o map. Zero where no file is read or written (the Python module).
 struct Io_seconds
 {
   double read = 0, check = 0, write = 0;
@@ -127,7 +129,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0)
 json make_report(const Disk_settings& s, const Indexed_mesh& input, const Seam_cut& cut,
                  const std::vector<Border_loop>& loops, const Disk_run& run,
                  const Metrics* initial, const Metrics* final_metrics, const Density_setup& density, double picture_seconds,
-                 const Io_seconds& io)
+                 const Io_seconds& io = Io_seconds())
 {
   const SMP::Discrete_lie_flow_report& R = run.report;
   json j;
@@ -250,6 +252,64 @@ std::string square_border_hint(const Disk_settings& s, const Disk_run& run, cons
 
 } // namespace
 
+Disk_outcome compute_disk(const Indexed_mesh& input, Disk_settings& s, const std::vector<double>& density_values)
+{
+  Disk_outcome o;
+  // With seams, the flow maps the input cut open (one vertex per seam side),
+  // which must pass the check of an uncut input; densities and regions are
+  // the input's (faces keep their order).
+  if(!s.seam.empty()) o.cut = read_and_cut(input, s.input, s.seam, check_disk_topology);
+  const Indexed_mesh& mesh = mapped_mesh(input, s, o);
+  o.loops = check_disk_topology(mesh, s.input);
+  const std::vector<Border_loop>& loops = o.loops;
+  if(!s.seam.empty() && s.outer_loop != 0)
+    throw Cli_error("--outer-loop applies without --seam (with seams, the longest loop of the cut surface is the outer one)");
+  if(std::size_t(s.outer_loop) >= loops.size())
+    throw Cli_error("--outer-loop " + std::to_string(s.outer_loop) + ": " + s.input + " has " +
+                    std::to_string(loops.size()) + " border loop" + (loops.size() == 1 ? "" : "s") + " (0 to " +
+                    std::to_string(loops.size() - 1) + ", longest first, as 'dlf info' lists them)");
+  if(loops.size() > 1) {
+    s.on_outer_loop.assign(mesh.xyz.size(), 0);
+    for(int v : loops[std::size_t(s.outer_loop)].vertices) s.on_outer_loop[std::size_t(v)] = 1;
+  }
+  if(loops.size() > 1 && s.mode != "certified")
+    throw Cli_error("--mode " + s.mode + " takes disks only: " + s.input + " has " + std::to_string(loops.size() - 1) +
+                    (loops.size() == 2 ? " hole" : " holes") + " (the certified mode, the default, fills them for the flow)");
+  if(!s.init_uv_file.empty()) s.init_uv = read_uv_obj(s.init_uv_file, input.xyz.size());
+  o.density = density_values.empty()
+                ? make_density(input, s)
+                : density_of_values(input, density_values, [&](std::size_t k) {
+                    return k < density_values.size() ? "density[" + std::to_string(k) + "]" : std::string("density");
+                  });
+  s.options.face_density = o.density.face_density; // faces in input order, as Surface_mesh keeps them
+
+  o.run = s.seam.empty() ? run_disk(input, s) : run_seamed_disk(input, o.cut, s);
+  o.ok = o.run.status == SMP::OK;
+
+  // The library measures both maps of a successful run; a failed run's
+  // initial map is measured here.
+  if(o.ok) {
+    o.initial = o.run.report.initial_metrics;
+    o.final_metrics = o.run.report.final_metrics;
+    measure_regions(mesh, o.run.final_uv, o.density);
+  } else if(!o.run.initial_uv.empty()) {
+    o.initial = compute_metrics(mesh, o.run.initial_uv, o.density.face_density);
+  }
+  return o;
+}
+
+json disk_report(const Disk_settings& s, const Indexed_mesh& input, const Disk_outcome& o, double picture_seconds)
+{
+  return make_report(s, input, o.cut, o.loops, o.run, o.initial_ptr(), o.final_ptr(), o.density, picture_seconds);
+}
+
+Cli_error disk_failure(const Disk_settings& s, const Indexed_mesh& input, const Disk_outcome& o)
+{
+  return Cli_error(s.input + ": " + SMP::discrete_lie_flow_error_name(o.run.status) + ": " + o.run.report.message +
+                     square_border_hint(s, o.run, mapped_mesh(input, s, o), o.loops),
+                   is_input_error(o.run.status) ? EXIT_BAD_INPUT : EXIT_FLOW_ERROR);
+}
+
 int disk_command(const std::vector<std::string>& args)
 {
   Disk_settings s;
@@ -265,50 +325,27 @@ int disk_command(const std::vector<std::string>& args)
   auto t0 = std::chrono::steady_clock::now();
   const Indexed_mesh input = read_triangle_mesh(s.input);
   io.read = seconds_since(t0);
-  t0 = std::chrono::steady_clock::now();
-  // With seams, the flow maps the input cut open (one vertex per seam side),
-  // which must pass the check of an uncut input; densities and regions are
-  // the input's (faces keep their order).
-  Seam_cut cut;
-  if(!s.seam.empty()) cut = read_and_cut(input, s.input, s.seam, check_disk_topology);
-  const Indexed_mesh& mesh = s.seam.empty() ? input : cut.mesh;
-  const std::vector<Border_loop> loops = check_disk_topology(mesh, s.input);
-  if(!s.seam.empty() && s.outer_loop != 0)
-    throw Cli_error("--outer-loop applies without --seam (with seams, the longest loop of the cut surface is the outer one)");
-  if(std::size_t(s.outer_loop) >= loops.size())
-    throw Cli_error("--outer-loop " + std::to_string(s.outer_loop) + ": " + s.input + " has " +
-                    std::to_string(loops.size()) + " border loop" + (loops.size() == 1 ? "" : "s") + " (0 to " +
-                    std::to_string(loops.size() - 1) + ", longest first, as 'dlf info' lists them)");
-  if(loops.size() > 1) {
-    s.on_outer_loop.assign(mesh.xyz.size(), 0);
-    for(int v : loops[std::size_t(s.outer_loop)].vertices) s.on_outer_loop[std::size_t(v)] = 1;
-  }
-  if(loops.size() > 1 && s.mode != "certified")
-    throw Cli_error("--mode " + s.mode + " takes disks only: " + s.input + " has " + std::to_string(loops.size() - 1) +
-                    (loops.size() == 2 ? " hole" : " holes") + " (the certified mode, the default, fills them for the flow)");
-  if(!s.init_uv_file.empty()) s.init_uv = read_uv_obj(s.init_uv_file, input.xyz.size());
-  Density_setup density = make_density(input, s);
-  s.options.face_density = density.face_density; // faces in input order, as Surface_mesh keeps them
-  io.check = seconds_since(t0);
-
   Progress progress(s.verbosity, s.mode != "certified");
   s.options.callback = progress.callback();
-  const Disk_run run = s.seam.empty() ? run_disk(input, s) : run_seamed_disk(input, cut, s);
-  progress.finish();
-  const bool ok = run.status == SMP::OK;
-
-  // The library measures both maps of a successful run; a failed run's
-  // initial map is measured here.
-  Metrics initial, final_metrics;
-  if(ok) {
-    initial = run.report.initial_metrics;
-    final_metrics = run.report.final_metrics;
-    measure_regions(mesh, run.final_uv, density);
-  } else if(!run.initial_uv.empty()) {
-    initial = compute_metrics(mesh, run.initial_uv, density.face_density);
+  Disk_outcome outcome;
+  t0 = std::chrono::steady_clock::now();
+  try {
+    outcome = compute_disk(input, s);
+  } catch(...) {
+    progress.finish();
+    throw;
   }
-  const Metrics* initial_ptr = run.initial_uv.empty() ? nullptr : &initial;
-  const Metrics* final_ptr = ok ? &final_metrics : nullptr;
+  progress.finish();
+  io.check = (std::max)(0., seconds_since(t0) - outcome.run.seconds);
+  const Seam_cut& cut = outcome.cut;
+  const Indexed_mesh& mesh = mapped_mesh(input, s, outcome);
+  const std::vector<Border_loop>& loops = outcome.loops;
+  Density_setup& density = outcome.density;
+  const Disk_run& run = outcome.run;
+  const bool ok = outcome.ok;
+  const Metrics& final_metrics = outcome.final_metrics;
+  const Metrics* initial_ptr = outcome.initial_ptr();
+  const Metrics* final_ptr = outcome.final_ptr();
 
   // On a flow error, only the report is written: it says what went wrong.
   std::vector<std::pair<std::string, double> > picture_timings;
@@ -356,10 +393,7 @@ int disk_command(const std::vector<std::string>& args)
                 << r.prescribed << " (" << std::showpos << std::setprecision(3) << 100 * r.relative_error() << std::noshowpos
                 << "%): the flow stopped (" << SMP::discrete_lie_flow_stop_reason_name(run.report.stop_reason) << ") after "
                 << run.report.iterations << " iterations; " << share_hint(run.report.stop_reason) << "\n";
-  if(!ok)
-    throw Cli_error(s.input + ": " + SMP::discrete_lie_flow_error_name(run.status) + ": " + run.report.message +
-                      square_border_hint(s, run, mesh, loops),
-                    is_input_error(run.status) ? EXIT_BAD_INPUT : EXIT_FLOW_ERROR);
+  if(!ok) throw disk_failure(s, input, outcome);
   return exit_code_of_ok_run(run.report, true);
 }
 

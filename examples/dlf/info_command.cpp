@@ -9,6 +9,7 @@
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
+#include "mesh_info.h"
 #include "mesh_input.h"
 #include "output_files.h"
 
@@ -321,6 +322,23 @@ void print_info(std::ostream& out, const std::string& path, const Mesh_info& m, 
 }
 
 } // namespace
+
+nlohmann::ordered_json mesh_info(const std::string& name, const std::vector<Vec3>& xyz,
+                                 const std::vector<std::vector<std::size_t> >& polygons)
+{
+  std::vector<Point_3> points;
+  for(const Vec3& p : xyz) points.emplace_back(p[0], p[1], p[2]);
+  const Mesh_info m = analyse(points, polygons);
+  std::string reason;
+  const std::string fits = verdict(m, reason);
+  std::vector<Border_loop> loops;
+  if(m.usable()) {
+    std::vector<Triangle> triangles;
+    for(const Polygon& p : polygons) triangles.push_back({ { int(p[0]), int(p[1]), int(p[2]) } });
+    loops = border_loops(xyz, triangles);
+  }
+  return info_json(name, m, loops, fits, reason);
+}
 
 int info_command(const std::vector<std::string>& args)
 {

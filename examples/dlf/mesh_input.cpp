@@ -33,7 +33,7 @@ typedef std::vector<std::size_t> Polygon;
 
 std::string quoted(const std::string& path) { return "'" + path + "'"; }
 
-void check_triangles(const std::vector<Polygon>& polygons, const std::string& path)
+void check_triangles(const std::vector<Polygon>& polygons, const std::string& name)
 {
   std::size_t bad = 0, first = 0;
   for(std::size_t f = 0; f < polygons.size(); ++f)
@@ -42,20 +42,20 @@ void check_triangles(const std::vector<Polygon>& polygons, const std::string& pa
     for(std::size_t f = 0; f < polygons.size(); ++f) {
       const Polygon& p = polygons[f];
       if(p[0] == p[1] || p[1] == p[2] || p[2] == p[0])
-        throw Cli_error(quoted(path) + ": face " + std::to_string(f) + " uses vertex " +
+        throw Cli_error(name + ": face " + std::to_string(f) + " uses vertex " +
                         std::to_string(p[0] == p[1] || p[0] == p[2] ? p[0] : p[1]) + " twice");
     }
     return;
   }
   std::ostringstream s;
-  s << quoted(path) << ": " << bad << " of " << polygons.size() << " faces are not triangles (first: face " << first
+  s << name << ": " << bad << " of " << polygons.size() << " faces are not triangles (first: face " << first
     << " with " << polygons[first].size() << " vertices); triangulate the mesh first";
   throw Cli_error(s.str());
 }
 
 // Unreferenced vertices would have no uv; rather than invent one (and break
 // "vt i is the uv of input vertex i"), refuse them.
-void check_referenced(std::size_t n, const std::vector<Polygon>& polygons, const std::string& path)
+void check_referenced(std::size_t n, const std::vector<Polygon>& polygons, const std::string& name)
 {
   std::vector<bool> used(n, false);
   for(const Polygon& p : polygons)
@@ -63,7 +63,7 @@ void check_referenced(std::size_t n, const std::vector<Polygon>& polygons, const
   const std::size_t unused = std::size_t(std::count(used.begin(), used.end(), false));
   if(unused == 0) return;
   std::ostringstream s;
-  s << quoted(path) << ": " << unused << (unused == 1 ? " vertex is" : " vertices are") << " not used by any face (first: vertex "
+  s << name << ": " << unused << (unused == 1 ? " vertex is" : " vertices are") << " not used by any face (first: vertex "
     << std::size_t(std::find(used.begin(), used.end(), false) - used.begin()) << "); remove them first";
   throw Cli_error(s.str());
 }
@@ -341,33 +341,44 @@ Indexed_mesh read_triangle_mesh(const std::string& path)
   // vertices, and every output of the tool must keep the input's numbering.
   if(!(has_off_extension(path) ? read_off_soup(path, points, polygons) : CGAL::IO::read_polygon_soup(path, points, polygons)))
     throw Cli_error(quoted(path) + ": cannot read as a mesh (CGAL reads .off, .obj, .ply, .stl, .ts, .vtp)");
+  std::vector<Vec3> xyz;
+  xyz.reserve(points.size());
+  for(const Point_3& p : points) xyz.push_back({{ p.x(), p.y(), p.z() }});
+  return checked_triangle_mesh(std::move(xyz), std::move(polygons), quoted(path));
+}
+
+Indexed_mesh checked_triangle_mesh(std::vector<Vec3> xyz, std::vector<std::vector<std::size_t> > polygons,
+                                   const std::string& name)
+{
   if(polygons.empty())
-    throw Cli_error(quoted(path) + ": the mesh has no faces");
-  for(std::size_t i = 0; i < points.size(); ++i)
-    if(!std::isfinite(points[i].x()) || !std::isfinite(points[i].y()) || !std::isfinite(points[i].z()))
-      throw Cli_error(quoted(path) + ": vertex " + std::to_string(i) + " has a non-finite coordinate");
+    throw Cli_error(name + ": the mesh has no faces");
+  for(std::size_t i = 0; i < xyz.size(); ++i)
+    if(!std::isfinite(xyz[i][0]) || !std::isfinite(xyz[i][1]) || !std::isfinite(xyz[i][2]))
+      throw Cli_error(name + ": vertex " + std::to_string(i) + " has a non-finite coordinate");
   for(std::size_t f = 0; f < polygons.size(); ++f)
     for(std::size_t i : polygons[f])
-      if(i >= points.size())
-        throw Cli_error(quoted(path) + ": face " + std::to_string(f) + " refers to vertex " + std::to_string(i) +
-                        " of " + std::to_string(points.size()));
-  check_triangles(polygons, path);
-  check_referenced(points.size(), polygons, path);
+      if(i >= xyz.size())
+        throw Cli_error(name + ": face " + std::to_string(f) + " refers to vertex " + std::to_string(i) +
+                        " of " + std::to_string(xyz.size()));
+  check_triangles(polygons, name);
+  check_referenced(xyz.size(), polygons, name);
 
-  if(!is_oriented_manifold(points.size(), polygons)) {
-    // Only an inconsistently oriented file gets here; orienting flips some
+  if(!is_oriented_manifold(xyz.size(), polygons)) {
+    // Only an inconsistently oriented mesh gets here; orienting flips some
     // faces but keeps the order, unless it must duplicate non-manifold
     // vertices, which would renumber.
+    std::vector<Point_3> points;
+    points.reserve(xyz.size());
+    for(const Vec3& p : xyz) points.emplace_back(p[0], p[1], p[2]);
     const std::size_t n = points.size(), mesh_faces = polygons.size();
     CGAL::Polygon_mesh_processing::orient_polygon_soup(points, polygons);
     if(points.size() != n || polygons.size() != mesh_faces || !CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
-      throw Cli_error(quoted(path) + ": the mesh is not manifold (an edge has more than two faces, or a vertex "
+      throw Cli_error(name + ": the mesh is not manifold (an edge has more than two faces, or a vertex "
                       "joins separate fans)");
   }
 
   Indexed_mesh mesh;
-  mesh.xyz.reserve(points.size());
-  for(const Point_3& p : points) mesh.xyz.push_back({{ p.x(), p.y(), p.z() }});
+  mesh.xyz = std::move(xyz);
   mesh.faces.reserve(polygons.size());
   for(const Polygon& p : polygons) mesh.faces.push_back({{ int(p[0]), int(p[1]), int(p[2]) }});
   return mesh;

@@ -10,6 +10,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/critical_step.h>
 
 #include <array>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,11 @@ struct Indexed_mesh
 /// missing or unreadable file, an empty mesh, non-finite coordinates,
 /// non-triangle faces, unreferenced vertices, or non-manifold input.
 Indexed_mesh read_triangle_mesh(const std::string& path);
+
+/// The checks of `read_triangle_mesh()` on a mesh given as arrays (the
+/// Python module's input): throws `Cli_error` prefixed by `name`.
+Indexed_mesh checked_triangle_mesh(std::vector<Vec3> xyz, std::vector<std::vector<std::size_t> > polygons,
+                                   const std::string& name);
 
 /// A border loop: its vertices in walking order, from its smallest index.
 struct Border_loop

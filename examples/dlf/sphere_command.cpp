@@ -13,6 +13,7 @@
 #include "mesh_input.h"
 #include "output_files.h"
 #include "progress.h"
+#include "sphere_outcome.h"
 #include "verdict.h"
 #include "svg_common.h"
 #include "svg_plots.h"
@@ -64,15 +65,7 @@ const char* sphere_help =
   "Progress: one line per iteration (iteration, step, residual, d_area, elapsed), rewritten in\n"
   "place when stdout is a terminal, plain lines otherwise; -q silences it, -v adds details.\n";
 
-struct Sphere_settings
-{
-  std::string input, output, report, svg, convergence_svg, histogram_svg, domain_mesh;
-  std::string mode = "certified";
-  SMP::Discrete_lie_flow_options options;
-  Verbosity verbosity = Verbosity::NORMAL;
-  bool history_in_report = false;
-  Disk_settings density; ///< only its density_file, regions and band are used
-};
+} // namespace
 
 bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_settings& s)
 {
@@ -171,6 +164,8 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
   return true;
 }
 
+namespace {
+
 // The share of the sphere's (flat) area each region got.
 void measure_regions_on_sphere(const Indexed_mesh& mesh, const std::vector<Vec3>& p, Density_setup& setup)
 {
@@ -191,6 +186,119 @@ void measure_regions_on_sphere(const Indexed_mesh& mesh, const std::vector<Vec3>
 
 } // namespace
 
+bool Sphere_outcome::input_error() const
+{
+  const int code = int(status);
+  return code == SMP::ERROR_NOT_GENUS_0 || code == SMP::ERROR_NON_TRIANGULAR_MESH ||
+         code == SMP::ERROR_DEGENERATE_INPUT || code == SMP::ERROR_EMPTY_MESH || code == SMP::ERROR_INVALID_DENSITY;
+}
+
+Sphere_outcome compute_sphere(const Indexed_mesh& input, Sphere_settings& s, const std::vector<double>& density_values)
+{
+  // A Surface_mesh in input order, so that vertex i is input vertex i.
+  Mesh mesh;
+  for(const Vec3& p : input.xyz) mesh.add_vertex(Kernel::Point_3(p[0], p[1], p[2]));
+  for(std::size_t f = 0; f < input.faces.size(); ++f) {
+    const Triangle& t = input.faces[f];
+    if(mesh.add_face(Mesh::Vertex_index(t[0]), Mesh::Vertex_index(t[1]), Mesh::Vertex_index(t[2])) == Mesh::null_face())
+      throw Cli_error(s.input + ": face " + std::to_string(f) + " makes the mesh non-manifold");
+  }
+  Sphere_outcome o;
+  o.density = density_values.empty()
+                ? make_density(input, s.density)
+                : density_of_values(input, density_values, [&](std::size_t k) {
+                    return k < density_values.size() ? "density[" + std::to_string(k) + "]" : std::string("density");
+                  });
+  s.options.face_density = o.density.face_density; // faces in input order, as the Surface_mesh keeps them
+
+  const auto start = std::chrono::steady_clock::now();
+  SMP::Discrete_lie_flow_sphere_parameterizer_3<Mesh> dlf(s.options);
+  Mesh::Property_map<Mesh::Vertex_index, Kernel::Point_3> sphere =
+    mesh.add_property_map<Mesh::Vertex_index, Kernel::Point_3>("v:dlf_sphere").first;
+  o.status = dlf.parameterize(mesh, sphere);
+  o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  o.report = dlf.report();
+  if(o.ok()) {
+    for(Mesh::Vertex_index v : mesh.vertices()) o.points.push_back({{ sphere[v].x(), sphere[v].y(), sphere[v].z() }});
+    measure_regions_on_sphere(input, o.points, o.density);
+  }
+  return o;
+}
+
+json sphere_report(const Sphere_settings& s, const Indexed_mesh& input, const Sphere_outcome& o)
+{
+  const SMP::Discrete_lie_flow_report& R = o.report;
+  const Density_setup& density = o.density;
+  const bool ok = o.ok();
+  json j;
+  j["status"] = run_status(o.status, R);
+  j["message"] = R.message;
+  j["input"] = s.input;
+  j["vertices"] = input.xyz.size();
+  j["faces"] = input.faces.size();
+  j["iterations"] = R.iterations;
+  j["stop_reason"] = SMP::discrete_lie_flow_stop_reason_name(R.stop_reason);
+  j["seconds"] = { { "initial", R.seconds_initial }, { "flow", R.seconds_flow }, { "total", o.seconds } };
+  j["options"] = { { "tolerance", s.options.tolerance }, { "log_area_tolerance", s.options.sphere.log_area_tolerance },
+                   { "share_tolerance", s.options.certified.share_tolerance },
+                   { "max_iterations", s.options.max_iterations },
+                   { "mu", s.options.mu > 0 ? json(s.options.mu) : json(nullptr) }, // null: the default
+                   { "literal_targets", !s.options.paper.lump_targets_on_flowing_faces },
+                   { "delaunay_flips", s.options.paper.delaunay_flips },
+                   { "fixed_step", s.options.fixed_step > 0 ? json(s.options.fixed_step) : json(nullptr) },
+                   { "threshold", s.options.paper.residual_threshold } };
+  // As `dlf disk`: "final" is measured on the input triangles; the flowing
+  // triangulation (flipped in paper mode) has its own fields.
+  j["mode"] = s.mode;
+  j["caller_inverted_faces"] = ok ? json(R.caller_inverted_faces) : json(nullptr);
+  j["flowing_inverted_faces"] = ok ? json(R.flowing_inverted_faces) : json(nullptr);
+  j["flips"] = R.flips;
+  j["flowing_non_delaunay_edges"] = ok && s.mode != "certified" ? json(R.flowing_non_delaunay_edges) : json(nullptr);
+  j["collapse_faces"] = R.collapse_faces;
+  j["initial_domain_d_area"] = R.initial_d_area;
+  j["domain_d_area"] = R.final_d_area;
+  j["final_residual"] = R.final_residual;
+  if(density.source != "none") {
+    json d;
+    d["source"] = density.source;
+    if(!s.density.density_file.empty()) d["file"] = s.density.density_file;
+    if(!density.regions.empty()) d["band"] = s.density.band;
+    d["min"] = *std::min_element(density.face_density.begin(), density.face_density.end());
+    d["max"] = *std::max_element(density.face_density.begin(), density.face_density.end());
+    d["share_error"] = R.final_share_error; // density_levels.h
+    j["density"] = d;
+  }
+  if(!density.regions.empty()) {
+    json regions = json::array();
+    for(const Density_region& r : density.regions)
+      regions.push_back({ { "name", r.name }, { "factor", r.factor }, { "faces", r.faces.size() },
+                          { "prescribed_fraction", r.prescribed },
+                          { "achieved_fraction", ok ? json(r.achieved) : json(nullptr) },
+                          { "relative_error", ok ? json(r.relative_error()) : json(nullptr) },
+                          { "reached", ok ? json(std::abs(r.relative_error()) <= region_share_tolerance) : json(nullptr) } });
+    j["regions"] = regions;
+  }
+  j["initial"] = ok ? metrics_to_json(R.initial_metrics) : json(nullptr);
+  j["final"] = ok ? metrics_to_json(R.final_metrics) : json(nullptr);
+  j["puncture_face"] = R.puncture_face;
+  j["rejected_by_exact_check"] = R.rejected_by_exact_check;
+  if(s.history_in_report) {
+    json h = json::array();
+    for(const SMP::Discrete_lie_flow_iteration& it : R.history)
+      h.push_back({ { "iteration", it.iteration }, { "step", it.step }, { "critical_step", it.critical_step },
+                    { "d_area", it.d_area }, { "backtracks", it.backtracks }, { "flips", it.flips },
+                    { "seconds", it.seconds } });
+    j["history"] = h;
+  }
+  return j;
+}
+
+Cli_error sphere_failure(const Sphere_settings& s, const Sphere_outcome& o)
+{
+  return Cli_error(s.input + ": " + SMP::discrete_lie_flow_error_name(o.status) + ": " + o.report.message,
+                   o.input_error() ? EXIT_BAD_INPUT : EXIT_FLOW_ERROR);
+}
+
 int sphere_command(const std::vector<std::string>& args)
 {
   Sphere_settings s;
@@ -204,53 +312,41 @@ int sphere_command(const std::vector<std::string>& args)
   if(!s.histogram_svg.empty()) outputs.declare(s.histogram_svg, "--plot-histogram");
 
   const Indexed_mesh input = read_triangle_mesh(s.input);
-  // A Surface_mesh in input order, so that vertex i is input vertex i.
-  Mesh mesh;
-  for(const Vec3& p : input.xyz) mesh.add_vertex(Kernel::Point_3(p[0], p[1], p[2]));
-  for(std::size_t f = 0; f < input.faces.size(); ++f) {
-    const Triangle& t = input.faces[f];
-    if(mesh.add_face(Mesh::Vertex_index(t[0]), Mesh::Vertex_index(t[1]), Mesh::Vertex_index(t[2])) == Mesh::null_face())
-      throw Cli_error(s.input + ": face " + std::to_string(f) + " makes the mesh non-manifold");
-  }
-  Density_setup density = make_density(input, s.density);
-  s.options.face_density = density.face_density; // faces in input order, as the Surface_mesh keeps them
   Progress progress(s.verbosity, s.mode != "certified");
   s.options.callback = progress.callback();
-
-  const auto start = std::chrono::steady_clock::now();
-  SMP::Discrete_lie_flow_sphere_parameterizer_3<Mesh> dlf(s.options);
-  Mesh::Property_map<Mesh::Vertex_index, Kernel::Point_3> sphere =
-    mesh.add_property_map<Mesh::Vertex_index, Kernel::Point_3>("v:dlf_sphere").first;
-  const SMP::Error_code status = dlf.parameterize(mesh, sphere);
+  Sphere_outcome outcome;
+  try {
+    outcome = compute_sphere(input, s);
+  } catch(...) {
+    progress.finish();
+    throw;
+  }
   progress.finish();
-  const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const SMP::Discrete_lie_flow_report& R = dlf.report();
-  const bool ok = status == SMP::OK;
+  const SMP::Discrete_lie_flow_report& R = outcome.report;
+  const bool ok = outcome.ok();
+  const double total = outcome.seconds;
+  const std::vector<Vec3>& points = outcome.points;
+  const Density_setup& density = outcome.density;
+  const SMP::Error_code status = outcome.status;
   // Input the command cannot use is refused without output, as `dlf disk`
   // does; a flow error still gets its report.
-  const int code = int(status);
-  const bool input_error = code == SMP::ERROR_NOT_GENUS_0 || code == SMP::ERROR_NON_TRIANGULAR_MESH ||
-                           code == SMP::ERROR_DEGENERATE_INPUT || code == SMP::ERROR_EMPTY_MESH ||
-                           code == SMP::ERROR_INVALID_DENSITY;
+  const bool input_error = outcome.input_error();
 
+  auto write_points = [&](std::ostream& o) {
+    for(const Vec3& p : points) o << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  };
   if(ok && !s.output.empty())
     outputs.write(s.output, [&](std::ostream& o) {
       o << "# dlf sphere " << s.input << ": d_area " << std::setprecision(10) << R.final_metrics.d_area << "\n"
         << std::setprecision(17);
-      for(Mesh::Vertex_index v : mesh.vertices()) {
-        const Kernel::Point_3& p = sphere[v];
-        o << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
-      }
+      write_points(o);
       for(const Triangle& t : input.faces) o << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
     });
   // The flowing triangulation: flipped in paper and literal mode, the input's otherwise.
   if(ok && !s.domain_mesh.empty())
     outputs.write(s.domain_mesh, [&](std::ostream& o) {
       o << "# dlf sphere " << s.input << ": mode " << s.mode << ", flowing triangulation\n" << std::setprecision(17);
-      for(Mesh::Vertex_index v : mesh.vertices()) {
-        const Kernel::Point_3& p = sphere[v];
-        o << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
-      }
+      write_points(o);
       if(s.mode != "certified")
         for(const std::array<int, 3>& t : R.domain_faces) o << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
       else
@@ -258,10 +354,6 @@ int sphere_command(const std::vector<std::string>& args)
     });
   std::ostringstream caption;
   caption << "dlf sphere " << s.input << ": d_area " << std::setprecision(10) << R.final_metrics.d_area;
-  std::vector<Vec3> points;
-  if(ok)
-    for(Mesh::Vertex_index v : mesh.vertices()) points.push_back({{ sphere[v].x(), sphere[v].y(), sphere[v].z() }});
-  if(ok) measure_regions_on_sphere(input, points, density);
   if(ok && !s.svg.empty())
     outputs.write(s.svg, [&](std::ostream& o) { write_svg_sphere(o, input, points, caption.str()); });
   // The initial map is not kept by the library: the result only.
@@ -275,66 +367,7 @@ int sphere_command(const std::vector<std::string>& args)
       write_convergence_plot(o, R.history, R.initial_d_area, s.options.tolerance, caption.str());
     });
   if(!s.report.empty() && !input_error) {
-    json j;
-    j["status"] = run_status(status, R);
-    j["message"] = R.message;
-    j["input"] = s.input;
-    j["vertices"] = input.xyz.size();
-    j["faces"] = input.faces.size();
-    j["iterations"] = R.iterations;
-    j["stop_reason"] = SMP::discrete_lie_flow_stop_reason_name(R.stop_reason);
-    j["seconds"] = { { "initial", R.seconds_initial }, { "flow", R.seconds_flow }, { "total", total } };
-    j["options"] = { { "tolerance", s.options.tolerance }, { "log_area_tolerance", s.options.sphere.log_area_tolerance },
-                     { "share_tolerance", s.options.certified.share_tolerance },
-                     { "max_iterations", s.options.max_iterations },
-                     { "mu", s.options.mu > 0 ? json(s.options.mu) : json(nullptr) }, // null: the default
-                     { "literal_targets", !s.options.paper.lump_targets_on_flowing_faces },
-                     { "delaunay_flips", s.options.paper.delaunay_flips },
-                     { "fixed_step", s.options.fixed_step > 0 ? json(s.options.fixed_step) : json(nullptr) },
-                     { "threshold", s.options.paper.residual_threshold } };
-    // As `dlf disk`: "final" is measured on the input triangles; the flowing
-    // triangulation (flipped in paper mode) has its own fields.
-    j["mode"] = s.mode;
-    j["caller_inverted_faces"] = ok ? json(R.caller_inverted_faces) : json(nullptr);
-    j["flowing_inverted_faces"] = ok ? json(R.flowing_inverted_faces) : json(nullptr);
-    j["flips"] = R.flips;
-    j["flowing_non_delaunay_edges"] = ok && s.mode != "certified" ? json(R.flowing_non_delaunay_edges) : json(nullptr);
-    j["collapse_faces"] = R.collapse_faces;
-    j["initial_domain_d_area"] = R.initial_d_area;
-    j["domain_d_area"] = R.final_d_area;
-    j["final_residual"] = R.final_residual;
-    if(density.source != "none") {
-      json d;
-      d["source"] = density.source;
-      if(!s.density.density_file.empty()) d["file"] = s.density.density_file;
-      if(!density.regions.empty()) d["band"] = s.density.band;
-      d["min"] = *std::min_element(density.face_density.begin(), density.face_density.end());
-      d["max"] = *std::max_element(density.face_density.begin(), density.face_density.end());
-      d["share_error"] = R.final_share_error; // density_levels.h
-      j["density"] = d;
-    }
-    if(!density.regions.empty()) {
-      json regions = json::array();
-      for(const Density_region& r : density.regions)
-        regions.push_back({ { "name", r.name }, { "factor", r.factor }, { "faces", r.faces.size() },
-                            { "prescribed_fraction", r.prescribed },
-                            { "achieved_fraction", ok ? json(r.achieved) : json(nullptr) },
-                            { "relative_error", ok ? json(r.relative_error()) : json(nullptr) },
-                            { "reached", ok ? json(std::abs(r.relative_error()) <= region_share_tolerance) : json(nullptr) } });
-      j["regions"] = regions;
-    }
-    j["initial"] = ok ? metrics_to_json(R.initial_metrics) : json(nullptr);
-    j["final"] = ok ? metrics_to_json(R.final_metrics) : json(nullptr);
-    j["puncture_face"] = R.puncture_face;
-    j["rejected_by_exact_check"] = R.rejected_by_exact_check;
-    if(s.history_in_report) {
-      json h = json::array();
-      for(const SMP::Discrete_lie_flow_iteration& it : R.history)
-        h.push_back({ { "iteration", it.iteration }, { "step", it.step }, { "critical_step", it.critical_step },
-                      { "d_area", it.d_area }, { "backtracks", it.backtracks }, { "flips", it.flips },
-                      { "seconds", it.seconds } });
-      j["history"] = h;
-    }
+    const json j = sphere_report(s, input, outcome);
     outputs.write(s.report, [&](std::ostream& o) { o << j.dump(2) << '\n'; });
   }
   outputs.commit();
@@ -363,9 +396,7 @@ int sphere_command(const std::vector<std::string>& args)
     if(ok && !(std::abs(r.relative_error()) <= region_share_tolerance))
       std::cerr << "dlf: warning: region " << r.name << " got " << r.achieved << " of the sphere's area, prescribed "
                 << r.prescribed << "\n";
-  if(!ok)
-    throw Cli_error(s.input + ": " + SMP::discrete_lie_flow_error_name(status) + ": " + R.message,
-                    input_error ? EXIT_BAD_INPUT : EXIT_FLOW_ERROR);
+  if(!ok) throw sphere_failure(s, outcome);
   return exit_code_of_ok_run(R, false);
 }
 

@@ -1,0 +1,407 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The Python module `discrete_lie_flow._core`: NumPy arrays in, arrays and
+// report dicts out. The checks, the runs and the reports are the `dlf`
+// tool's own code (disk_outcome.h, sphere_outcome.h, mesh_info.h), called on
+// arrays instead of files, so that a Python run and a command-line run of
+// the same mesh give the same map, bit for bit, and the same report fields.
+// Keyword arguments become the tool's options (tolerance= is --tolerance)
+// and are checked by the tool's parser: messages name the option as the
+// command line spells it.
+
+#include "cli_error.h"
+#include "disk_outcome.h"
+#include "mesh_info.h"
+#include "metrics.h"
+#include "sphere_outcome.h"
+
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_version.h>
+
+#include <pybind11/functional.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace py = pybind11;
+namespace SMP = CGAL::Surface_mesh_parameterization;
+using dlf_cli::Cli_error;
+using dlf_cli::Indexed_mesh;
+using dlf_cli::Vec2;
+using dlf_cli::Vec3;
+
+namespace {
+
+// FlowError, created at import (a subclass of RuntimeError).
+PyObject* flow_error_type = nullptr;
+
+[[noreturn]] void value_error(const std::string& message) { throw py::value_error(message); }
+
+char dtype_kind(const py::array& a) { return a.dtype().kind(); }
+
+std::string shape_text(const py::array& a)
+{
+  std::string s = "(";
+  for(py::ssize_t k = 0; k < a.ndim(); ++k) s += (k ? ", " : "") + std::to_string(a.shape(k));
+  return s + (a.ndim() == 1 ? ",)" : ")");
+}
+
+py::array as_array(const py::handle& h, const char* name)
+{
+  if(h.is_none()) value_error(std::string(name) + " must be an array, not None");
+  py::array a = py::array::ensure(h);
+  if(!a) value_error(std::string(name) + " must be an array");
+  return a;
+}
+
+// A (rows, cols) array of real numbers as row-major doubles; any stride
+// and any integer or floating dtype; the caller's array is only read.
+std::vector<double> real_matrix(const py::handle& h, const char* name, py::ssize_t cols, py::ssize_t rows = -1)
+{
+  const py::array a = as_array(h, name);
+  const char k = dtype_kind(a);
+  if(k != 'f' && k != 'i' && k != 'u')
+    value_error(std::string(name) + " must hold real numbers, got dtype " + std::string(py::str(a.dtype())));
+  if(a.ndim() != 2 || a.shape(1) != cols || (rows >= 0 && a.shape(0) != rows))
+    value_error(std::string(name) + " must have shape (" + (rows >= 0 ? std::to_string(rows) : std::string("n")) + ", " +
+                std::to_string(cols) + "), got " + shape_text(a));
+  // A C-contiguous float64 copy when needed (forcecast from the checked kinds only).
+  const auto d = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+  if(!d) throw py::error_already_set();
+  return std::vector<double>(d.data(), d.data() + d.size());
+}
+
+std::vector<std::vector<std::size_t> > index_triangles(const py::handle& h, std::size_t vertices)
+{
+  const py::array a = as_array(h, "F");
+  const char k = dtype_kind(a);
+  if(k != 'i' && k != 'u') value_error("F must hold integers, got dtype " + std::string(py::str(a.dtype())));
+  if(a.ndim() != 2 || a.shape(1) != 3) value_error("F must have shape (m, 3), got " + shape_text(a));
+  const auto d = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(a);
+  if(!d) throw py::error_already_set();
+  std::vector<std::vector<std::size_t> > faces(std::size_t(a.shape(0)));
+  for(std::size_t f = 0; f < faces.size(); ++f)
+    for(std::size_t c = 0; c < 3; ++c) {
+      const long long i = d.data()[3 * f + c];
+      if(i < 0 || (unsigned long long)(i) >= vertices)
+        value_error("F: face " + std::to_string(f) + " refers to vertex " + std::to_string(i) + " of " +
+                    std::to_string(vertices));
+      faces[f].push_back(std::size_t(i));
+    }
+  return faces;
+}
+
+std::vector<Vec3> points_of(const std::vector<double>& v)
+{
+  std::vector<Vec3> xyz(v.size() / 3);
+  for(std::size_t i = 0; i < xyz.size(); ++i) xyz[i] = {{ v[3 * i], v[3 * i + 1], v[3 * i + 2] }};
+  return xyz;
+}
+
+Indexed_mesh mesh_of(const py::handle& V, const py::handle& F)
+{
+  std::vector<Vec3> xyz = points_of(real_matrix(V, "V", 3));
+  std::vector<std::vector<std::size_t> > faces = index_triangles(F, xyz.size());
+  return dlf_cli::checked_triangle_mesh(std::move(xyz), std::move(faces), "mesh");
+}
+
+std::vector<double> density_of(const py::object& density)
+{
+  if(density.is_none()) return {};
+  const py::array a = as_array(density, "density");
+  const char k = dtype_kind(a);
+  if((k != 'f' && k != 'i' && k != 'u') || a.ndim() != 1)
+    value_error("density must be a 1-d array of real numbers (one per face or one per vertex), got dtype " +
+                std::string(py::str(a.dtype())) + " and shape " + shape_text(a));
+  const auto d = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+  return std::vector<double>(d.data(), d.data() + d.size());
+}
+
+py::object to_python(const nlohmann::ordered_json& j)
+{
+  // Doubles are written shortest-round-trip: the dict holds the very values.
+  return py::module_::import("json").attr("loads")(j.dump());
+}
+
+std::string number(double x)
+{
+  char b[32];
+  std::snprintf(b, sizeof b, "%.17g", x);
+  return b;
+}
+
+// A word option (mode, init, border, name), which must not read as an option of the tool.
+const std::string& word_arg(const std::string& value, const char* name)
+{
+  if(value.empty() || value[0] == '-') value_error(std::string("invalid value '") + value + "' for " + name);
+  return value;
+}
+
+// A number option; a TypeError (as Python's own) for anything else.
+double number_arg(const py::object& x, const char* name)
+{
+  if(PyBool_Check(x.ptr()) || !PyNumber_Check(x.ptr()) || PyUnicode_Check(x.ptr()))
+    throw py::type_error(std::string(name) + " must be a number, got " + std::string(py::str(py::type::of(x).attr("__name__"))));
+  return py::float_(x).cast<double>();
+}
+
+long long integer_arg(const py::object& x, const char* name)
+{
+  if(PyBool_Check(x.ptr()) || !PyIndex_Check(x.ptr()))
+    throw py::type_error(std::string(name) + " must be an integer, got " + std::string(py::str(py::type::of(x).attr("__name__"))));
+  return py::int_(x).cast<long long>();
+}
+
+// The options common to both flows, as the tool's arguments.
+void add_flow_arguments(std::vector<std::string>& args, const std::string& mode, const py::object& tolerance,
+                        const py::object& max_iterations, const py::object& mu, const py::object& share_tolerance,
+                        bool literal_targets, bool delaunay_flips, bool history)
+{
+  args.insert(args.end(), { "--mode", word_arg(mode, "mode"), "--quiet" });
+  if(!tolerance.is_none()) args.insert(args.end(), { "--tolerance", number(number_arg(tolerance, "tolerance")) });
+  if(!max_iterations.is_none()) {
+    const long long n = integer_arg(max_iterations, "max_iterations");
+    if(n < 0) value_error("--max-iterations must be >= 0");
+    args.insert(args.end(), { "--max-iterations", std::to_string(n) });
+  }
+  if(!mu.is_none()) args.insert(args.end(), { "--mu", number(number_arg(mu, "mu")) });
+  if(!share_tolerance.is_none()) args.insert(args.end(), { "--share-tolerance", number(number_arg(share_tolerance, "share_tolerance")) });
+  if(literal_targets) args.push_back("--literal-targets");
+  if(!delaunay_flips) args.push_back("--no-flips");
+  if(history) args.push_back("--history");
+}
+
+// The per-iteration callback, called without the GIL held by the flow: it
+// takes the GIL, calls Python, and stops the flow on False or on an
+// exception, which is kept to be raised once the flow has returned.
+class Python_callback
+{
+public:
+  explicit Python_callback(py::object f) : m_f(std::move(f)) {}
+  ~Python_callback()
+  {
+    if(m_type) {
+      py::gil_scoped_acquire gil;
+      Py_XDECREF(m_type);
+      Py_XDECREF(m_value);
+      Py_XDECREF(m_trace);
+    }
+  }
+
+  void install(SMP::Discrete_lie_flow_options& options)
+  {
+    if(m_f.is_none()) return;
+    options.callback = [this](const SMP::Discrete_lie_flow_iteration& it) { return call(it); };
+  }
+
+  /// Raises the callback's exception, if any (GIL held).
+  void rethrow()
+  {
+    if(!m_type) return;
+    PyErr_Restore(m_type, m_value, m_trace);
+    m_type = m_value = m_trace = nullptr;
+    throw py::error_already_set();
+  }
+
+private:
+  bool call(const SMP::Discrete_lie_flow_iteration& it)
+  {
+    py::gil_scoped_acquire gil;
+    try {
+      py::dict d;
+      d["iteration"] = it.iteration;
+      d["step"] = it.step;
+      d["critical_step"] = it.critical_step;
+      d["limiting_face"] = it.limiting_face;
+      d["d_area"] = it.d_area;
+      d["residual"] = it.residual;
+      d["backtracks"] = it.backtracks;
+      d["flips"] = it.flips;
+      d["seconds"] = it.seconds;
+      const py::object r = m_f(d);
+      if(r.is_none()) return true;
+      const int go_on = PyObject_IsTrue(r.ptr());
+      if(go_on < 0) throw py::error_already_set();
+      return go_on == 1;
+    } catch(py::error_already_set& e) {
+      e.restore();
+      PyErr_Fetch(&m_type, &m_value, &m_trace);
+      return false;
+    }
+  }
+
+  py::object m_f;
+  PyObject *m_type = nullptr, *m_value = nullptr, *m_trace = nullptr;
+};
+
+// Cli_error as ValueError (bad input) or FlowError (with the report, when there is one).
+[[noreturn]] void raise(const Cli_error& e, const py::object& report = py::none())
+{
+  if(e.code() != dlf_cli::EXIT_FLOW_ERROR) throw py::value_error(e.what());
+  py::object error = py::reinterpret_borrow<py::object>(flow_error_type)(e.what());
+  error.attr("report") = report;
+  PyErr_SetObject(flow_error_type, error.ptr());
+  throw py::error_already_set();
+}
+
+py::array_t<double> rows_of(const std::vector<double>& flat, py::ssize_t cols)
+{
+  py::array_t<double> out({ py::ssize_t(flat.size()) / cols, cols });
+  std::copy(flat.begin(), flat.end(), out.mutable_data());
+  return out;
+}
+
+py::tuple disk(const py::object& V, const py::object& F, const std::string& mode, const py::object& border,
+               const std::string& init, const py::object& density, const py::object& tolerance,
+               const py::object& max_iterations, const py::object& mu, const py::object& share_tolerance,
+               int outer_loop, bool literal_targets, bool delaunay_flips, bool history, const py::object& callback,
+               const std::string& name)
+{
+  const Indexed_mesh input = [&] {
+    try {
+      return mesh_of(V, F);
+    } catch(const Cli_error& e) {
+      raise(e);
+    }
+  }();
+  const std::vector<double> density_values = density_of(density);
+  std::vector<std::string> args{ word_arg(name, "name"), "--init", word_arg(init, "init"), "--outer-loop",
+                                 std::to_string(outer_loop) };
+  if(!border.is_none()) args.insert(args.end(), { "--border", word_arg(border.cast<std::string>(), "border") });
+  add_flow_arguments(args, mode, tolerance, max_iterations, mu, share_tolerance, literal_targets, delaunay_flips, history);
+  dlf_cli::Disk_settings s;
+  Python_callback progress(callback);
+  dlf_cli::Disk_outcome outcome;
+  try {
+    if(!dlf_cli::parse_disk_arguments(args, s)) value_error("invalid options");
+    // As with a density file: a density asks for a tighter default tolerance.
+    if(!density_values.empty() && tolerance.is_none()) s.options.tolerance = dlf_cli::density_tolerance;
+    progress.install(s.options);
+    py::gil_scoped_release release;
+    outcome = dlf_cli::compute_disk(input, s, density_values);
+  } catch(const Cli_error& e) {
+    progress.rethrow();
+    raise(e);
+  }
+  progress.rethrow();
+  const py::object report = to_python(dlf_cli::disk_report(s, input, outcome, 0));
+  if(!outcome.ok) raise(dlf_cli::disk_failure(s, input, outcome), report);
+  std::vector<double> uv;
+  for(const Vec2& p : outcome.run.final_uv) uv.insert(uv.end(), { p[0], p[1] });
+  return py::make_tuple(rows_of(uv, 2), report);
+}
+
+py::tuple sphere(const py::object& V, const py::object& F, const std::string& mode, const py::object& density,
+                 const py::object& tolerance, const py::object& log_area_tolerance, const py::object& max_iterations,
+                 const py::object& mu, const py::object& share_tolerance, bool literal_targets, bool delaunay_flips,
+                 bool history, const py::object& callback, const std::string& name)
+{
+  const Indexed_mesh input = [&] {
+    try {
+      return mesh_of(V, F);
+    } catch(const Cli_error& e) {
+      raise(e);
+    }
+  }();
+  const std::vector<double> density_values = density_of(density);
+  std::vector<std::string> args{ word_arg(name, "name") };
+  add_flow_arguments(args, mode, tolerance, max_iterations, mu, share_tolerance, literal_targets, delaunay_flips, history);
+  if(!log_area_tolerance.is_none())
+    args.insert(args.end(), { "--log-area-tolerance", number(number_arg(log_area_tolerance, "log_area_tolerance")) });
+  dlf_cli::Sphere_settings s;
+  Python_callback progress(callback);
+  dlf_cli::Sphere_outcome outcome;
+  try {
+    if(!dlf_cli::parse_sphere_arguments(args, s)) value_error("invalid options");
+    if(!density_values.empty() && tolerance.is_none()) s.options.tolerance = dlf_cli::density_tolerance;
+    progress.install(s.options);
+    py::gil_scoped_release release;
+    outcome = dlf_cli::compute_sphere(input, s, density_values);
+  } catch(const Cli_error& e) {
+    progress.rethrow();
+    raise(e);
+  }
+  progress.rethrow();
+  if(!outcome.ok()) {
+    const Cli_error e = dlf_cli::sphere_failure(s, outcome);
+    raise(e, outcome.input_error() ? py::none() : to_python(dlf_cli::sphere_report(s, input, outcome)));
+  }
+  const py::object report = to_python(dlf_cli::sphere_report(s, input, outcome));
+  std::vector<double> points;
+  for(const Vec3& p : outcome.points) points.insert(points.end(), { p[0], p[1], p[2] });
+  return py::make_tuple(rows_of(points, 3), report);
+}
+
+py::object score(const py::object& V, const py::object& F, const py::object& uv_in, const py::object& density)
+{
+  try {
+    const Indexed_mesh mesh = mesh_of(V, F);
+    const std::vector<double> flat = real_matrix(uv_in, "uv", 2, py::ssize_t(mesh.xyz.size()));
+    std::vector<Vec2> uv(mesh.xyz.size());
+    for(std::size_t i = 0; i < uv.size(); ++i) {
+      uv[i] = {{ flat[2 * i], flat[2 * i + 1] }};
+      if(!std::isfinite(uv[i][0]) || !std::isfinite(uv[i][1]))
+        value_error("uv: vertex " + std::to_string(i) + " has a non-finite coordinate");
+    }
+    const std::vector<double> values = density_of(density);
+    std::vector<double> face_density;
+    if(!values.empty())
+      face_density = dlf_cli::density_of_values(mesh, values, [&](std::size_t k) {
+                       return k < values.size() ? "density[" + std::to_string(k) + "]" : std::string("density");
+                     }).face_density;
+    dlf_cli::Metrics m;
+    {
+      py::gil_scoped_release release;
+      m = dlf_cli::compute_metrics(mesh, uv, face_density);
+    }
+    return to_python(dlf_cli::metrics_to_json(m));
+  } catch(const Cli_error& e) {
+    raise(e);
+  }
+}
+
+py::object info(const py::object& V, const py::object& F, const std::string& name)
+{
+  // Unlike the flows, info() describes what it is given: non-finite
+  // coordinates, unreferenced vertices, non-manifold faces are counted.
+  const std::vector<Vec3> xyz = points_of(real_matrix(V, "V", 3));
+  const std::vector<std::vector<std::size_t> > faces = index_triangles(F, xyz.size());
+  if(faces.empty()) value_error("F: the mesh has no faces");
+  return to_python(dlf_cli::mesh_info(name, xyz, faces));
+}
+
+} // namespace
+
+PYBIND11_MODULE(_core, m)
+{
+  m.doc() = "Discrete Lie Flow: area-preserving and measure-controlled maps of triangle meshes "
+            "(the compiled part of discrete_lie_flow; import discrete_lie_flow instead).";
+  m.attr("__version__") = DISCRETE_LIE_FLOW_VERSION_STR;
+  flow_error_type = PyErr_NewExceptionWithDoc(
+    "discrete_lie_flow.FlowError",
+    "The flow failed on a valid input (the library's error code and message); `report` holds the "
+    "run's report dict, as `dlf --report` writes it, or None.",
+    PyExc_RuntimeError, nullptr);
+  m.attr("FlowError") = py::handle(flow_error_type);
+
+  using namespace pybind11::literals;
+  m.def("disk", &disk, "V"_a, "F"_a, py::kw_only(), "mode"_a = "certified", "border"_a = py::none(),
+        "init"_a = "tutte", "density"_a = py::none(), "tolerance"_a = py::none(), "max_iterations"_a = py::none(),
+        "mu"_a = py::none(), "share_tolerance"_a = py::none(), "outer_loop"_a = 0, "literal_targets"_a = false,
+        "delaunay_flips"_a = true, "history"_a = false, "callback"_a = py::none(), "name"_a = "mesh",
+        "Maps a disk-topology mesh (or a disk with holes) onto the plane; see discrete_lie_flow.disk.");
+  m.def("sphere", &sphere, "V"_a, "F"_a, py::kw_only(), "mode"_a = "certified", "density"_a = py::none(),
+        "tolerance"_a = py::none(), "log_area_tolerance"_a = py::none(), "max_iterations"_a = py::none(),
+        "mu"_a = py::none(), "share_tolerance"_a = py::none(), "literal_targets"_a = false,
+        "delaunay_flips"_a = true, "history"_a = false, "callback"_a = py::none(), "name"_a = "mesh",
+        "Maps a closed genus-0 mesh onto the unit sphere; see discrete_lie_flow.sphere.");
+  m.def("score", &score, "V"_a, "F"_a, "uv"_a, py::kw_only(), "density"_a = py::none(),
+        "The distortion metrics of a map; see discrete_lie_flow.score.");
+  m.def("info", &info, "V"_a, "F"_a, py::kw_only(), "name"_a = "mesh",
+        "What `dlf info` reports of a mesh; see discrete_lie_flow.info.");
+}

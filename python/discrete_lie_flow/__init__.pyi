@@ -1,0 +1,51 @@
+# Type stubs of discrete_lie_flow (the functions are documented in __init__.py).
+from typing import Any, Callable, Dict, Optional, Tuple
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+
+class FlowError(RuntimeError):
+    report: Optional[Dict[str, Any]]
+
+Callback = Callable[[Dict[str, Any]], Optional[bool]]
+
+def disk(
+    V: npt.ArrayLike,
+    F: npt.ArrayLike,
+    *,
+    mode: str = ...,
+    border: Optional[str] = ...,
+    init: str = ...,
+    density: Optional[npt.ArrayLike] = ...,
+    tolerance: Optional[float] = ...,
+    max_iterations: Optional[int] = ...,
+    mu: Optional[float] = ...,
+    share_tolerance: Optional[float] = ...,
+    outer_loop: int = ...,
+    literal_targets: bool = ...,
+    delaunay_flips: bool = ...,
+    history: bool = ...,
+    callback: Optional[Callback] = ...,
+    name: str = ...,
+) -> Tuple[npt.NDArray[np.float64], Dict[str, Any]]: ...
+def sphere(
+    V: npt.ArrayLike,
+    F: npt.ArrayLike,
+    *,
+    mode: str = ...,
+    density: Optional[npt.ArrayLike] = ...,
+    tolerance: Optional[float] = ...,
+    log_area_tolerance: Optional[float] = ...,
+    max_iterations: Optional[int] = ...,
+    mu: Optional[float] = ...,
+    share_tolerance: Optional[float] = ...,
+    literal_targets: bool = ...,
+    delaunay_flips: bool = ...,
+    history: bool = ...,
+    callback: Optional[Callback] = ...,
+    name: str = ...,
+) -> Tuple[npt.NDArray[np.float64], Dict[str, Any]]: ...
+def score(V: npt.ArrayLike, F: npt.ArrayLike, uv: npt.ArrayLike, *, density: Optional[npt.ArrayLike] = ...) -> Dict[str, Any]: ...
+def info(V: npt.ArrayLike, F: npt.ArrayLike, *, name: str = ...) -> Dict[str, Any]: ...

@@ -1,0 +1,23 @@
+# Type stubs of discrete_lie_flow.study (documented in study.py).
+import argparse
+import sqlite3
+from typing import Dict, Iterable, List, Optional, Sequence, Tuple
+
+class Config:
+    name: str
+    command: str
+    options: Tuple[str, ...]
+    description: str
+
+CONFIGS: Dict[str, Config]
+DEFAULT_CONFIGS: Tuple[str, ...]
+STATUSES: Tuple[str, ...]
+COLUMNS: Tuple[str, ...]
+
+def run_one(mesh_key: str, mesh_path: str, config_name: str, dlf: str, timeout: float, every_config: bool = ...) -> dict: ...
+def open_db(path: str) -> sqlite3.Connection: ...
+def done_keys(db: sqlite3.Connection) -> set: ...
+def insert_row(db: sqlite3.Connection, row: dict) -> bool: ...
+def corpus_meshes(inputs: Iterable[str]) -> List[Tuple[str, str]]: ...
+def summary_markdown(db: sqlite3.Connection) -> str: ...
+def main(argv: Optional[Sequence[str]] = ...) -> int: ...
