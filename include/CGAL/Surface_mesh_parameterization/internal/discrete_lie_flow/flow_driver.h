@@ -14,6 +14,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/geometry.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sparse_solver.h>
 
 #include <algorithm>
 #include <chrono>
@@ -214,6 +215,28 @@ inline double updated_regularization(double eps, std::size_t halvings)
 /// Smallest critical root over `faces` for `root(face index, bound so far)`;
 /// `limiting` receives its face. The bound lets a root function skip faces
 /// that provably cannot invert before it.
+/// The Poisson step of the paper's flows: L h = a − b·Σa/Σb, with L the
+/// full cotangent stiffness (its kernel: the constants) and h_0 = 0 pinned by
+/// dropping row and column 0 (the right-hand side sums to zero). Counts and
+/// times the factorisation; false if it or the solve fails.
+template <class Solver>
+bool solve_pinned_poisson(const Sparse_matrix& L, const std::vector<double>& a, const std::vector<double>& b,
+                          Solver& solver, Flow_outcome& out, std::vector<double>& h)
+{
+  const std::size_t n = a.size();
+  double sa = 0, sb = 0;
+  for(std::size_t i = 0; i < n; ++i) { sa += a[i]; sb += b[i]; }
+  Eigen::VectorXd rhs(Eigen::Index(n - 1)), x;
+  for(std::size_t i = 1; i < n; ++i) rhs[Eigen::Index(i - 1)] = a[i] - b[i] * sa / sb;
+  const Sparse_matrix Lr = L.bottomRightCorner(Eigen::Index(n - 1), Eigen::Index(n - 1));
+  Scoped_timer timer(out.seconds_solve);
+  ++out.factorizations;
+  if(!solver.factorize(Lr) || !solver.solve(rhs, x)) return false;
+  h.assign(n, 0.);
+  for(std::size_t i = 1; i < n; ++i) h[i] = x[Eigen::Index(i - 1)];
+  return true;
+}
+
 template <class Root>
 double smallest_critical_step(std::size_t faces, const Root& root, int& limiting)
 {

@@ -100,23 +100,14 @@ public:
   /// vertices; the border keeps its tangential part.
   Direction_status direction(Flow_outcome& out)
   {
-    Eigen::VectorXd rhs(Eigen::Index(m_n - 1)), g_red;
-    Sparse_matrix Lr;
+    Sparse_matrix L;
     {
       Scoped_timer timer(out.seconds_assembly);
-      double so = 0, sm = 0;
-      for(std::size_t i = 0; i < m_n; ++i) { so += m_hO[i]; sm += m_hM[i]; }
-      for(std::size_t i = 1; i < m_n; ++i) rhs[Eigen::Index(i - 1)] = m_hO[i] - m_hM[i] * so / sm;
-      Lr = cotangent_stiffness(m_uv, m_tri.faces).bottomRightCorner(Eigen::Index(m_n - 1), Eigen::Index(m_n - 1));
+      L = cotangent_stiffness(m_uv, m_tri.faces);
     }
-    {
-      Scoped_timer timer(out.seconds_solve);
-      ++out.factorizations;
-      if(!m_solver.factorize(Lr) || !m_solver.solve(rhs, g_red)) return Direction_status::SOLVER_FAILED;
-    }
+    std::vector<double> g;
+    if(!solve_pinned_poisson(L, m_hO, m_hM, m_solver, out, g)) return Direction_status::SOLVER_FAILED;
     Scoped_timer timer(out.seconds_step);
-    std::vector<double> g(m_n, 0.);
-    for(std::size_t i = 1; i < m_n; ++i) g[i] = g_red[Eigen::Index(i - 1)];
     std::vector<Vec2> grad(m_n, Vec2{{ 0, 0 }});
     std::vector<double> wsum(m_n, 0.);
     for(std::size_t t = 0; t < m_tri.faces.size(); ++t) {
@@ -254,23 +245,15 @@ public:
 
   Direction_status direction(Flow_outcome& out)
   {
-    Eigen::VectorXd rhs(Eigen::Index(m_n - 1)), g_red;
-    Sparse_matrix Lr;
+    Sparse_matrix L;
     {
       Scoped_timer timer(out.seconds_assembly);
-      double so = 0, sm = 0;
-      for(std::size_t i = 0; i < m_n; ++i) { so += m_hO[i]; sm += m_hM[i]; }
-      for(std::size_t i = 1; i < m_n; ++i) rhs[Eigen::Index(i - 1)] = m_hO[i] - m_hM[i] * so / sm;
-      Lr = sphere_sobolev_matrix(m_p, m_tri.faces, 0.).bottomRightCorner(Eigen::Index(m_n - 1), Eigen::Index(m_n - 1));
+      L = sphere_sobolev_matrix(m_p, m_tri.faces, 0.);
     }
-    {
-      Scoped_timer timer(out.seconds_solve);
-      ++out.factorizations;
-      if(!m_solver.factorize(Lr) || !m_solver.solve(rhs, g_red)) return Direction_status::SOLVER_FAILED;
-    }
+    std::vector<double> g;
+    if(!solve_pinned_poisson(L, m_hO, m_hM, m_solver, out, g)) return Direction_status::SOLVER_FAILED;
     Scoped_timer timer(out.seconds_step);
-    std::vector<double> g(m_n, 0.), wsum(m_n, 0.);
-    for(std::size_t i = 1; i < m_n; ++i) g[i] = g_red[Eigen::Index(i - 1)];
+    std::vector<double> wsum(m_n, 0.);
     std::fill(m_d.begin(), m_d.end(), Vec3{{ 0, 0, 0 }});
     for(std::size_t t = 0; t < m_tri.faces.size(); ++t) {
       const Face& f = m_tri.faces[t];

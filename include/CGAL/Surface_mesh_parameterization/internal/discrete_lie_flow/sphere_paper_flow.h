@@ -70,8 +70,7 @@ public:
   /// mean of its face gradients, less their normal component (§5.3).
   Direction_status direction(Flow_outcome& out)
   {
-    Eigen::VectorXd rhs(Eigen::Index(m_n - 1)), h_red;
-    Sparse_matrix Lr;
+    Sparse_matrix L;
     {
       Scoped_timer timer(out.seconds_assembly);
       m_flips = 0;
@@ -81,20 +80,12 @@ public:
       lump_on_vertices(m_n, m_tri.faces, m_u, m_AO);
       if(m_opt.paper.lump_targets_on_flowing_faces) lump_on_vertices(m_n, m_tri.faces, m_target, m_AM);
       else m_AM = m_literal_AM;
-      double so = 0, sm = 0;
-      for(std::size_t i = 0; i < m_n; ++i) { so += m_AO[i]; sm += m_AM[i]; }
-      for(std::size_t i = 1; i < m_n; ++i) rhs[Eigen::Index(i - 1)] = m_AO[i] - m_AM[i] * so / sm;
       // The cotangent stiffness alone (no mass term).
-      Lr = sphere_sobolev_matrix(m_p, m_tri.faces, 0.).bottomRightCorner(Eigen::Index(m_n - 1), Eigen::Index(m_n - 1));
+      L = sphere_sobolev_matrix(m_p, m_tri.faces, 0.);
     }
-    {
-      Scoped_timer timer(out.seconds_solve);
-      ++out.factorizations;
-      if(!m_solver.factorize(Lr) || !m_solver.solve(rhs, h_red)) return Direction_status::SOLVER_FAILED;
-    }
+    std::vector<double> h;
+    if(!solve_pinned_poisson(L, m_AO, m_AM, m_solver, out, h)) return Direction_status::SOLVER_FAILED;
     Scoped_timer timer(out.seconds_step);
-    std::vector<double> h(m_n, 0.);
-    for(std::size_t i = 1; i < m_n; ++i) h[i] = h_red[Eigen::Index(i - 1)];
     std::fill(m_grad.begin(), m_grad.end(), Vec3{{ 0, 0, 0 }});
     std::fill(m_wsum.begin(), m_wsum.end(), 0.);
     for(std::size_t t = 0; t < m_tri.faces.size(); ++t) {
