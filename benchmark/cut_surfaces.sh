@@ -57,6 +57,7 @@ all_cases=(
   "elephant-g3-6:cut elephant.off 6"
   "knot1-g1:cut knot1.off 4"
   "eight-g2:cut eight.off 4"
+  "eight-loop1-g2:cut-loop eight.off 1 4"
   "lion-holes:holes lion.off"
   "holes:holes holes.off"
   "head:holes head.off"
