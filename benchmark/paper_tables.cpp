@@ -408,7 +408,7 @@ static void write_markdown(std::ostream& md, const json& doc)
      << sci(doc["ot_tolerance"].get<double>()) << ".\n\n";
 
   md << "### Tables 3 and 4: DLF (circle) against optimal transport, from the same Tutte start\n\n"
-     << "| mesh | #F | #V | OT Newton | OT rel. gradient | OT s | DLF s | DLF paper s | OT D_area | DLF D_area | DLF paper D_area | OT folds | DLF folds | DLF paper folds |\n"
+     << "| mesh | faces | vertices | OT Newton | OT rel. gradient | OT s | DLF s | DLF paper s | OT D_area | DLF D_area | DLF paper D_area | OT folds | DLF folds | DLF paper folds |\n"
      << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   const auto folds = [](const json& m) { return std::to_string(m["inverted_faces"].get<std::size_t>() + m["degenerate_faces"].get<std::size_t>()); };
   const auto dval = [](const json& run, const char* key) { return run.contains("metrics") ? fmt(run["metrics"][key].get<double>(), 4) : std::string("—"); };
@@ -487,7 +487,7 @@ static void write_markdown(std::ostream& md, const json& doc)
   }
 
   md << "\n### Table 5: the spherical DLF on CGAL's closed genus-0 meshes\n\n"
-     << "| mesh | #F | #V | mode | status (iterations) | time s | Area_total | D_area | start Area_total | start D_area | folds |\n"
+     << "| mesh | faces | vertices | mode | status (iterations) | time s | Area_total | D_area | start Area_total | start D_area | folds |\n"
      << "|---|---:|---:|---|---|---:|---:|---:|---:|---:|---:|\n";
   for(const json& c : doc["sphere"]) {
     if(c.contains("error")) { md << "| " << c["mesh"].get<std::string>() << " | " << c["error"].get<std::string>() << " |\n"; continue; }

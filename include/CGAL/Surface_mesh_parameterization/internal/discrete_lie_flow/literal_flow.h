@@ -108,27 +108,8 @@ public:
     std::vector<double> g;
     if(!solve_pinned_poisson(L, m_hO, m_hM, m_solver, out, g)) return Direction_status::SOLVER_FAILED;
     Scoped_timer timer(out.seconds_step);
-    std::vector<Vec2> grad(m_n, Vec2{{ 0, 0 }});
-    std::vector<double> wsum(m_n, 0.);
-    for(std::size_t t = 0; t < m_tri.faces.size(); ++t) {
-      const Face& f = m_tri.faces[t];
-      const Vec2 gt = p1_gradient(m_uv[f[0]], m_uv[f[1]], m_uv[f[2]], g[f[0]], g[f[1]], g[f[2]]);
-      for(int k = 0; k < 3; ++k) {
-        grad[f[k]][0] += m_u[t] * gt[0];
-        grad[f[k]][1] += m_u[t] * gt[1];
-        wsum[f[k]] += m_u[t];
-      }
-    }
-    m_d.resize(m_dofs.size);
-    bool moves = false;
-    for(std::size_t v = 0; v < m_n; ++v)
-      for(int j = 0; j < m_dofs.count[v]; ++j) {
-        const int a = m_dofs.first[v] + j;
-        m_basis[std::size_t(a)] = m_dofs.basis(int(v), j, m_curve);
-        m_d[a] = (grad[v][0] * m_basis[a][0] + grad[v][1] * m_basis[a][1]) / wsum[v];
-        moves = moves || m_d[a] != 0;
-      }
-    if(!moves) return Direction_status::NO_DESCENT;
+    if(!potential_gradient_direction(m_uv, m_tri.faces, m_u, g, m_dofs, m_curve, m_basis, m_d))
+      return Direction_status::NO_DESCENT;
     planar_velocity(m_n, m_dofs, m_basis, m_d, m_vel);
     return Direction_status::DESCENT;
   }

@@ -10,6 +10,7 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_PLANAR_DOFS_H
 
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/boundary_curve.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/cotangent_laplacian.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/geometry.h>
 
 #include <Eigen/Core>
@@ -100,6 +101,39 @@ inline void planar_velocity(std::size_t n, const Planar_dofs& dofs, const std::v
       vel[v][0] += d[a] * basis[a][0];
       vel[v][1] += d[a] * basis[a][1];
     }
+}
+
+/// The paper's vertex direction for the potential `h`: ∇h per face,
+/// area-weighted (by `u`) at the vertices, in dof coordinates (`basis` is
+/// filled; a border vertex keeps its tangential part). Returns whether any
+/// dof moves.
+inline bool potential_gradient_direction(const std::vector<Vec2>& uv, const std::vector<Face>& faces,
+                                         const std::vector<double>& u, const std::vector<double>& h,
+                                         const Planar_dofs& dofs, const Boundary_curve& curve,
+                                         std::vector<Vec2>& basis, Eigen::VectorXd& d)
+{
+  const std::size_t n = uv.size();
+  std::vector<Vec2> grad(n, Vec2{{ 0, 0 }});
+  std::vector<double> wsum(n, 0.);
+  for(std::size_t t = 0; t < faces.size(); ++t) {
+    const Face& f = faces[t];
+    const Vec2 gt = p1_gradient(uv[f[0]], uv[f[1]], uv[f[2]], h[f[0]], h[f[1]], h[f[2]]);
+    for(int k = 0; k < 3; ++k) {
+      grad[f[k]][0] += u[t] * gt[0];
+      grad[f[k]][1] += u[t] * gt[1];
+      wsum[f[k]] += u[t];
+    }
+  }
+  d.resize(dofs.size);
+  bool moves = false;
+  for(std::size_t v = 0; v < n; ++v)
+    for(int j = 0; j < dofs.count[v]; ++j) {
+      const int a = dofs.first[v] + j;
+      basis[std::size_t(a)] = dofs.basis(int(v), j, curve);
+      d[a] = (grad[v][0] * basis[a][0] + grad[v][1] * basis[a][1]) / wsum[v];
+      moves = moves || d[a] != 0;
+    }
+  return moves;
 }
 
 } // namespace dlf

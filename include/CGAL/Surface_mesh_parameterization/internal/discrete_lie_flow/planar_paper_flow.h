@@ -186,24 +186,7 @@ public:
     std::vector<double> h;
     if(!solve_pinned_poisson(L, m_AO, m_AM, m_solver, out, h)) return Direction_status::SOLVER_FAILED;
     Scoped_timer timer(out.seconds_step);
-    std::vector<Vec2> grad(m_n, Vec2{{ 0, 0 }});
-    std::vector<double> wsum(m_n, 0.);
-    for(std::size_t t = 0; t < m_tri.faces.size(); ++t) {
-      const Face& f = m_tri.faces[t];
-      const Vec2 gt = p1_gradient(m_uv[f[0]], m_uv[f[1]], m_uv[f[2]], h[f[0]], h[f[1]], h[f[2]]);
-      for(int k = 0; k < 3; ++k) {
-        grad[f[k]][0] += m_u[t] * gt[0];
-        grad[f[k]][1] += m_u[t] * gt[1];
-        wsum[f[k]] += m_u[t];
-      }
-    }
-    m_d.resize(m_dofs.size);
-    for(std::size_t v = 0; v < m_n; ++v)
-      for(int j = 0; j < m_dofs.count[v]; ++j) {
-        const int a = m_dofs.first[v] + j;
-        m_basis[std::size_t(a)] = m_dofs.basis(int(v), j, m_curve);
-        m_d[a] = (grad[v][0] * m_basis[a][0] + grad[v][1] * m_basis[a][1]) / wsum[v];
-      }
+    potential_gradient_direction(m_uv, m_tri.faces, m_u, h, m_dofs, m_curve, m_basis, m_d);
     planar_velocity(m_n, m_dofs, m_basis, m_d, m_vel);
     if(m_opt.fixed_step <= 0 && m_settings.guard_rounds > 0)
       guard_collapses(m_uv, m_tri.faces, m_u, m_target, m_dofs, m_basis, m_settings, m_d, m_vel);
