@@ -131,6 +131,16 @@ check "sphere --density per face: density in the report" equals "$(json_get sph_
 "$DLF" sphere "$MESHES/sphere.off" --log-area-tolerance 0 --report sph0.json -q
 check "sphere --log-area-tolerance 0: exit 0, converged" equals "$? $(json_get sph0.json "" stop_reason)" "0 converged"
 check "sphere: --log-area-tolerance 0 lets d_area alone decide" number_is "$(json_get sph0.json "" iterations)" "<=" "$(json_get sph.json "" iterations)"
+# the start: the conformal one, and the caller's own (an earlier result)
+"$DLF" sphere "$MESHES/ellipe0.003.off" --start conformal -o sph_conf.obj --report sph_conf.json -q
+check "sphere --start conformal: exit 0, converged, reported" equals \
+  "$? $(json_get sph_conf.json "" stop_reason) $(json_get sph_conf.json "" start)" "0 converged conformal"
+"$DLF" sphere "$MESHES/ellipe0.003.off" --init-map sph_conf.obj --report sph_given.json -q
+check "sphere --init-map: exit 0, started from the given map" equals "$? $(json_get sph_given.json "" start)" "0 given"
+check "sphere --init-map: an earlier result has nothing left to do" number_is "$(json_get sph_given.json "" iterations)" "<=" 1
+check "sphere --init-map: its initial d_area is the earlier final one" python3 -c \
+  "import sys; sys.exit(abs($(json_get sph_given.json initial d_area) - $(json_get sph_conf.json final d_area)) > 1e-9)"
+awk '/^v / && ++n == 1 { first = $0; next } /^v / && n == 2 { print; print first; next } { print }' sph.obj > sph_folded.obj
 
 # --- help --------------------------------------------------------------------
 check "dlf --help" bash -c "'$DLF' --help | grep -q 'dlf disk'"
@@ -494,6 +504,12 @@ expect_error "--threshold outside literal mode" 1 "--threshold applies to --mode
 expect_error "--threshold not positive" 1 "--threshold must be a number > 0" disk "$NEF" --mode literal --threshold 0
 expect_error "--fixed-step not positive" 1 "--fixed-step must be a number > 0" disk "$NEF" --fixed-step -1
 expect_error "sphere --mode unknown" 1 "expected certified, paper or literal" sphere "$MESHES/sphere.off" --mode literall
+expect_error "sphere --start unknown" 1 "expected tutte or conformal" sphere "$MESHES/sphere.off" --start harmonic
+expect_error "sphere --init-map with --start" 1 "--init-map and --start exclude each other" sphere "$MESHES/sphere.off" \
+  --init-map sph.obj --start conformal
+expect_error "sphere --init-map of another mesh" 1 "expected the input's faces" sphere "$MESHES/sphere.off" --init-map sph_conf.obj
+expect_error "sphere --init-map folded" "" "ERROR_INITIAL_MAP_FOLDED: the given initial map has .* inverted" sphere \
+  "$MESHES/sphere.off" --init-map sph_folded.obj
 expect_error "paper mode refuses holes" 1 "--mode paper takes disks only: .* has 6 holes" disk "$MESHES/pig.off" --mode paper
 expect_error "unknown option" 1 "frobnicate" disk input.off --frobnicate
 expect_error "bad --mode value" 1 "'fast' for --mode" disk input.off --mode fast

@@ -99,6 +99,12 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
     ("threshold", po::value<double>(&s.options.paper.residual_threshold)->value_name("X")
        ->default_value(s.options.paper.residual_threshold),
      "literal mode: stop when ||h_M - h_Omega||^2 < X, vertex area elements in units of their mean")
+    ("start", po::value<std::string>(&s.start)->value_name("S")->default_value("tutte"),
+     "the initial map: tutte (Tutte's embedding of the punctured mesh, lifted stereographically) or "
+     "conformal (the cotangent-harmonic map instead, the paper's kind of start; refused if it folds)")
+    ("init-map", po::value<std::string>(&s.init_map_file)->value_name("SPHERE.obj"),
+     "start from this map instead: a mesh with the input's faces, its points scaled onto the unit sphere "
+     "(e.g. an earlier dlf sphere output); refused if a face folds")
     ("domain-mesh", po::value<std::string>(&s.domain_mesh)->value_name("FLOW.obj"),
      "write the sphere points with the final flowing triangulation (the input's in certified mode)")
     ("literal-targets", "paper mode: lump the target areas once on the input triangles (Algorithm 1 read literally)")
@@ -148,6 +154,14 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
   if(s.mode != "certified" && s.mode != "paper" && s.mode != "literal")
     throw Cli_error("invalid value '" + s.mode + "' for --mode (expected certified, paper or literal)");
   check_mode_options(vm, s.mode, s.options);
+  if(s.start != "tutte" && s.start != "conformal")
+    throw Cli_error("invalid value '" + s.start + "' for --start (expected tutte or conformal)");
+  if(!s.init_map_file.empty()) {
+    if(!vm["start"].defaulted()) throw Cli_error("--init-map and --start exclude each other");
+    s.start = "given";
+  }
+  s.options.sphere.start = s.start == "conformal" ? SMP::Discrete_lie_flow_sphere_start::CONFORMAL
+                                                  : SMP::Discrete_lie_flow_sphere_start::TUTTE;
   s.options.mode = mode_of(s.mode);
   s.options.paper.lump_targets_on_flowing_faces = vm.count("literal-targets") == 0;
   s.options.paper.delaunay_flips = vm.count("no-flips") == 0;
@@ -184,13 +198,33 @@ void measure_regions_on_sphere(const Indexed_mesh& mesh, const std::vector<Vec3>
   }
 }
 
+// The points of `--init-map`: a mesh file with the input's faces, in order
+// (a map written by `dlf sphere -o` keeps them).
+std::vector<Vec3> read_start_map(const std::string& path, const Indexed_mesh& input)
+{
+  const Indexed_mesh map = read_triangle_mesh(path);
+  if(map.xyz.size() != input.xyz.size() || map.faces.size() != input.faces.size())
+    throw Cli_error("'" + path + "': --init-map has " + std::to_string(map.xyz.size()) + " vertices and " +
+                    std::to_string(map.faces.size()) + " faces for the input's " + std::to_string(input.xyz.size()) +
+                    " and " + std::to_string(input.faces.size()) + " (expected the input's faces, in order)");
+  for(std::size_t f = 0; f < map.faces.size(); ++f)
+    if(map.faces[f] != input.faces[f])
+      throw Cli_error("'" + path + "': --init-map face " + std::to_string(f) +
+                      " is not the input's (expected the input's faces, in order)");
+  return map.xyz;
+}
+
 } // namespace
 
 bool Sphere_outcome::input_error() const
 {
   const int code = int(status);
+  // A folded --init-map is the caller's input too.
+  const bool given_start_folded = code == SMP::ERROR_INITIAL_MAP_FOLDED &&
+                                  report.sphere_start == SMP::Discrete_lie_flow_sphere_start::GIVEN;
   return code == SMP::ERROR_NOT_GENUS_0 || code == SMP::ERROR_NON_TRIANGULAR_MESH ||
-         code == SMP::ERROR_DEGENERATE_INPUT || code == SMP::ERROR_EMPTY_MESH || code == SMP::ERROR_INVALID_DENSITY;
+         code == SMP::ERROR_DEGENERATE_INPUT || code == SMP::ERROR_EMPTY_MESH || code == SMP::ERROR_INVALID_DENSITY ||
+         given_start_folded;
 }
 
 Sphere_outcome compute_sphere(const Indexed_mesh& input, Sphere_settings& s, const std::vector<double>& density_values)
@@ -215,6 +249,18 @@ Sphere_outcome compute_sphere(const Indexed_mesh& input, Sphere_settings& s, con
   SMP::Discrete_lie_flow_sphere_parameterizer_3<Mesh> dlf(s.options);
   Mesh::Property_map<Mesh::Vertex_index, Kernel::Point_3> sphere =
     mesh.add_property_map<Mesh::Vertex_index, Kernel::Point_3>("v:dlf_sphere").first;
+  if(!s.init_map.empty()) {
+    if(s.init_map.size() != input.xyz.size())
+      throw Cli_error("the initial map has " + std::to_string(s.init_map.size()) + " points for " +
+                      std::to_string(input.xyz.size()) + " mesh vertices");
+    Mesh::Property_map<Mesh::Vertex_index, Kernel::Point_3> start =
+      mesh.add_property_map<Mesh::Vertex_index, Kernel::Point_3>("v:dlf_start").first;
+    for(Mesh::Vertex_index v : mesh.vertices()) {
+      const Vec3& q = s.init_map[std::size_t(v)];
+      start[v] = Kernel::Point_3(q[0], q[1], q[2]);
+    }
+    dlf.set_initial_map(start);
+  }
   o.status = dlf.parameterize(mesh, sphere);
   o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   o.report = dlf.report();
@@ -250,6 +296,7 @@ json sphere_report(const Sphere_settings& s, const Indexed_mesh& input, const Sp
   // As `dlf disk`: "final" is measured on the input triangles; the flowing
   // triangulation (flipped in paper mode) has its own fields.
   j["mode"] = s.mode;
+  j["start"] = SMP::discrete_lie_flow_sphere_start_name(R.sphere_start);
   j["caller_inverted_faces"] = ok ? json(R.caller_inverted_faces) : json(nullptr);
   j["flowing_inverted_faces"] = ok ? json(R.flowing_inverted_faces) : json(nullptr);
   j["flips"] = R.flips;
@@ -312,6 +359,7 @@ int sphere_command(const std::vector<std::string>& args)
   if(!s.histogram_svg.empty()) outputs.declare(s.histogram_svg, "--plot-histogram");
 
   const Indexed_mesh input = read_triangle_mesh(s.input);
+  if(!s.init_map_file.empty()) s.init_map = read_start_map(s.init_map_file, input);
   Progress progress(s.verbosity, s.mode != "certified");
   s.options.callback = progress.callback();
   Sphere_outcome outcome;

@@ -28,6 +28,9 @@ struct Sphere_settings
 {
   std::string input, output, report, svg, convergence_svg, histogram_svg, domain_mesh;
   std::string mode = "certified";
+  std::string start = "tutte";  ///< tutte | conformal | given (`--init-map`)
+  std::string init_map_file;    ///< `--init-map`: the caller's start
+  std::vector<Vec3> init_map;   ///< its point per input vertex, once read
   CGAL::Surface_mesh_parameterization::Discrete_lie_flow_options options;
   Verbosity verbosity = Verbosity::NORMAL;
   bool history_in_report = false;

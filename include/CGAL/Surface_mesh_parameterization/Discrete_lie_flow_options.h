@@ -112,6 +112,27 @@ enum class Discrete_lie_flow_border
 };
 
 /// \ingroup PkgDiscreteLieFlowOptions
+/// Where the spherical flow starts. Both of the library's starts puncture
+/// one face, map the rest onto the plane with the puncture's corners fixed,
+/// lift it by inverse stereographic projection at the scale of least D_area
+/// and are accepted only when every face is positive by the exact predicate.
+enum class Discrete_lie_flow_sphere_start
+{
+  /// Tutte's barycentric map, the puncture an equilateral triangle: bijective
+  /// by construction. The default.
+  TUTTE,
+  /// The cotangent-harmonic (discrete conformal) map, the puncture a triangle
+  /// similar to the face: the paper's kind of start (a conformal sphere map),
+  /// in the style of Choi, Lam and Lui's FLASH without its south-pole
+  /// correction. Cotangent weights may be negative, so it can fold; it is
+  /// then refused with `ERROR_INITIAL_MAP_FOLDED`.
+  CONFORMAL,
+  /// The caller's map (`Discrete_lie_flow_sphere_parameterizer_3::set_initial_map()`),
+  /// certified the same way; reported, not selected by the options.
+  GIVEN
+};
+
+/// \ingroup PkgDiscreteLieFlowOptions
 /// Why the flow stopped.
 enum class Discrete_lie_flow_stop_reason
 {
@@ -164,6 +185,18 @@ inline const char* discrete_lie_flow_border_name(Discrete_lie_flow_border b)
   case Discrete_lie_flow_border::CIRCLE: return "circle";
   case Discrete_lie_flow_border::SQUARE: return "square";
   case Discrete_lie_flow_border::FREE: return "free";
+  }
+  return "unknown";
+}
+
+/// \ingroup PkgDiscreteLieFlowOptions
+/// The name of a spherical start as used in reports (`"tutte"`, `"conformal"`, `"given"`).
+inline const char* discrete_lie_flow_sphere_start_name(Discrete_lie_flow_sphere_start s)
+{
+  switch(s) {
+  case Discrete_lie_flow_sphere_start::TUTTE: return "tutte";
+  case Discrete_lie_flow_sphere_start::CONFORMAL: return "conformal";
+  case Discrete_lie_flow_sphere_start::GIVEN: return "given";
   }
   return "unknown";
 }
@@ -239,6 +272,9 @@ struct Discrete_lie_flow_sphere_options
   /// few outlier faces, the mean by the many; a Sobolev flow at D_area 2.01
   /// still had a mean of 0.05–0.09.
   double log_area_tolerance = 0.02;
+  /// The initial map (`TUTTE` or `CONFORMAL`; a map of the caller's own is
+  /// given with `set_initial_map()`).
+  Discrete_lie_flow_sphere_start start = Discrete_lie_flow_sphere_start::TUTTE;
 };
 
 /// \ingroup PkgDiscreteLieFlowOptions

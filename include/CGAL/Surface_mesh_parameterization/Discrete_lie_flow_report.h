@@ -139,7 +139,10 @@ struct Discrete_lie_flow_report
   /// parameterizer's outer loop), and `history` and `final_residual` follow
   /// the filled disk.
   std::size_t holes = 0;
-  /// The sphere: the face of the initial map's north cap (index in face order).
+  /// The sphere: which initial map the flow started from.
+  Discrete_lie_flow_sphere_start sphere_start = Discrete_lie_flow_sphere_start::TUTTE;
+  /// The sphere: the face of the initial map's north cap (index in face order;
+  /// -1 for a given map).
   int puncture_face = -1;
   /// The sphere: the plane scale of the stereographic lift.
   double initial_scale = 0;

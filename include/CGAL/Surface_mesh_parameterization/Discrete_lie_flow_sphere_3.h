@@ -42,11 +42,13 @@ namespace Surface_mesh_parameterization {
 /// Design 72 (2019) 49–68; \ref DLFBibSu2019 "Su et al. 2019").
 ///
 /// The initial map punctures one face, embeds the remaining disk by Tutte's
-/// barycentric map with the punctured triangle as a convex border, and lifts
-/// it by inverse stereographic projection at the scale that minimises the
-/// area distortion; it is accepted only when every face is positively
-/// oriented by CGAL's exact predicate `orientation(O, p, q, r)` (O the
-/// centre), else other punctures are tried. The flow (certified mode, the
+/// barycentric map with the punctured triangle as a convex border (or, with
+/// `options().sphere.start = CONFORMAL`, by the cotangent-harmonic map, the
+/// paper's kind of start), and lifts it by inverse stereographic projection
+/// at the scale that minimises the area distortion; it is accepted only when
+/// every face is positively oriented by CGAL's exact predicate
+/// `orientation(O, p, q, r)` (O the centre), else other punctures are tried.
+/// A caller's own start is given with `set_initial_map()`. The flow (certified mode, the
 /// default) descends the barrier energy D_area of the
 /// triangles between the sphere points: first on their cone areas along the
 /// tangential Sobolev gradient, then on their flat areas along a regularised
@@ -124,6 +126,24 @@ public:
     m_vertex_density = [density](vertex_descriptor v) { return double(get(density, v)); };
     m_face_density = nullptr;
   }
+
+  /// Starts the flow from the caller's map instead of the library's
+  /// (`options().sphere.start`): `initial_map` is a readable property map
+  /// `vertex_descriptor` → a 3D point with `x()`, `y()`, `z()` (e.g. an
+  /// earlier result, or a conformal map made elsewhere). Each point is
+  /// scaled onto the unit sphere; the map must keep every face positively
+  /// oriented by the exact predicate, else `parameterize()` returns
+  /// `ERROR_INITIAL_MAP_FOLDED` and names the first folded face.
+  template <class VertexPointMap>
+  void set_initial_map(VertexPointMap initial_map)
+  {
+    m_initial_map = [initial_map](vertex_descriptor v) {
+      const auto& q = get(initial_map, v);
+      return internal::dlf::Vec3{{ CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()) }};
+    };
+  }
+  /// Goes back to the library's start (`options().sphere.start`).
+  void clear_initial_map() { m_initial_map = nullptr; }
 
   /// Maps `mesh` onto the unit sphere: `sphere_map` (a writable property
   /// map `vertex_descriptor` → a 3D point type constructible from three
@@ -210,8 +230,11 @@ private:
         for(int k = 0; k < 3; ++k) options.face_density[f] += m_vertex_density(vertex_of[std::size_t(P.faces[f][k])]) / 3;
       }
     }
+    std::vector<D::Vec3> given;
+    if(m_initial_map)
+      for(vertex_descriptor v : vertex_of) given.push_back(m_initial_map(v));
     std::vector<D::Vec3> points;
-    const Error_code code = D::map_to_sphere(P, points, options, m_solver_traits.solver(), R);
+    const Error_code code = D::map_to_sphere(P, points, options, m_solver_traits.solver(), R, m_initial_map ? &given : nullptr);
     if(code != OK) return code;
     typedef typename boost::property_traits<VertexSphereMap>::value_type Point;
     for(std::size_t i = 0; i < vertex_of.size(); ++i) put(sphere_map, vertex_of[i], Point(points[i][0], points[i][1], points[i][2]));
@@ -222,6 +245,7 @@ private:
   Solver_traits m_solver_traits;
   std::function<double(face_descriptor)> m_face_density;
   std::function<double(vertex_descriptor)> m_vertex_density;
+  std::function<internal::dlf::Vec3(vertex_descriptor)> m_initial_map;
   Discrete_lie_flow_report m_report;
 };
 

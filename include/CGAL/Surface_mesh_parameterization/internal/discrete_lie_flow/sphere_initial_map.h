@@ -2,14 +2,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // A certified bijective initial map of a closed genus-0 mesh onto the unit
-// sphere: puncture one face, map the remaining disk by Tutte's barycentric
-// embedding with the punctured face's three vertices on an equilateral
-// triangle (a convex boundary, so the embedding is bijective in exact
-// arithmetic), scale the plane by the factor that minimises D_area after
-// projection, and lift it by inverse stereographic projection (the punctured
-// face becomes the cap around the north pole). The result is accepted only
-// when every face is positively oriented by CGAL's exact predicate on the
-// stored doubles; otherwise other punctures are tried.
+// sphere: puncture one face, map the remaining disk onto the plane with the
+// punctured face's three vertices fixed (Tutte's barycentric embedding inside
+// an equilateral triangle, bijective in exact arithmetic; or the cotangent-
+// harmonic, discrete conformal, map inside a triangle similar to the face),
+// scale the plane by the factor that minimises D_area after projection, and
+// lift it by inverse stereographic projection (the punctured face becomes the
+// cap around the north pole; scaling keeps a conformal map conformal). The
+// result is accepted only when every face is positively oriented by CGAL's
+// exact predicate on the stored doubles; otherwise other punctures are tried.
+// A caller's own start is normalised and certified the same way.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_SPHERE_INITIAL_MAP_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_SPHERE_INITIAL_MAP_H
@@ -23,11 +25,14 @@
 #include <Eigen/Sparse>
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <numeric>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -69,11 +74,84 @@ inline std::vector<int> puncture_candidates(const Sphere_problem& P, std::size_t
   return order;
 }
 
-/// Tutte's embedding (uniform weights) of the mesh minus face `puncture`, its
-/// vertices (a, b, c) on the unit-circumradius equilateral triangle, ordered
-/// so that the disk's faces are counter-clockwise. False if the solve fails.
+/// Where the puncture's corners go: the unit-circumradius equilateral
+/// triangle (Tutte), or a triangle similar to the face, its centroid at the
+/// origin (conformal). Counter-clockwise in the order hole[0], hole[2],
+/// hole[1], which is how the disk's faces see their border.
+inline std::array<Vec2, 3> puncture_corners(const Sphere_problem& P, const Face& hole, bool conformal)
+{
+  const double pi = 3.14159265358979323846;
+  std::array<Vec2, 3> c; // c[k]: the corner of the k-th vertex of the order (hole[0], hole[2], hole[1])
+  if(!conformal) {
+    for(int k = 0; k < 3; ++k) c[std::size_t(k)] = {{ std::cos(pi / 2 + 2 * pi * k / 3), std::sin(pi / 2 + 2 * pi * k / 3) }};
+    return c;
+  }
+  const Vec3 &a = P.xyz[std::size_t(hole[0])], &b = P.xyz[std::size_t(hole[2])], &d = P.xyz[std::size_t(hole[1])];
+  const double ab = norm3(sub(b, a)), ad = norm3(sub(d, a));
+  const double angle = std::atan2(norm3(cross(sub(b, a), sub(d, a))), dot(sub(b, a), sub(d, a)));
+  c[0] = {{ 0, 0 }};
+  c[1] = {{ ab, 0 }};
+  c[2] = {{ ad * std::cos(angle), ad * std::sin(angle) }};
+  const Vec2 g{{ (c[0][0] + c[1][0] + c[2][0]) / 3, (c[0][1] + c[1][1] + c[2][1]) / 3 }};
+  const double r = std::sqrt((std::max)({ (c[0][0] - g[0]) * (c[0][0] - g[0]) + (c[0][1] - g[1]) * (c[0][1] - g[1]),
+                                          (c[1][0] - g[0]) * (c[1][0] - g[0]) + (c[1][1] - g[1]) * (c[1][1] - g[1]),
+                                          (c[2][0] - g[0]) * (c[2][0] - g[0]) + (c[2][1] - g[1]) * (c[2][1] - g[1]) }));
+  for(Vec2& x : c) x = {{ (x[0] - g[0]) / r, (x[1] - g[1]) / r }};
+  return c;
+}
+
+/// Half the cotangent of the angle at `a` of the 3D triangle (a, b, c).
+inline double half_cotangent_3(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const Vec3 u = sub(b, a), v = sub(c, a);
+  return 0.5 * dot(u, v) / norm3(cross(u, v));
+}
+
+/// The key of the undirected edge {i, j}: the smaller index in the high half.
+inline std::uint64_t undirected_edge_key(int i, int j)
+{
+  return (std::uint64_t(std::uint32_t((std::min)(i, j))) << 32) | std::uint32_t((std::max)(i, j));
+}
+
+/// Cotangent weights ½ (cot α + cot β) of the undirected edges of a closed
+/// mesh (α, β the 3D angles opposite the edge), sorted by key, raised to at
+/// least 1e-3 of their mean where an edge is far from Delaunay (α + β near
+/// or above π): positive weights keep Tutte's guarantee (a bijection onto the
+/// convex puncture in exact arithmetic), and Delaunay edges, most of a fine
+/// mesh, keep their cotangent weights.
+inline std::vector<std::pair<std::uint64_t, double> > conformal_edge_weights(const Sphere_problem& P)
+{
+  std::vector<std::pair<std::uint64_t, double> > w;
+  w.reserve(3 * P.faces.size());
+  for(const Face& t : P.faces)
+    for(int k = 0; k < 3; ++k) {
+      const int i = t[(k + 1) % 3], j = t[(k + 2) % 3];
+      w.emplace_back(undirected_edge_key(i, j), half_cotangent_3(P.xyz[std::size_t(t[k])], P.xyz[std::size_t(i)], P.xyz[std::size_t(j)]));
+    }
+  std::sort(w.begin(), w.end());
+  std::size_t out = 0;
+  for(std::size_t a = 0; a < w.size(); ) {
+    std::size_t b = a;
+    double sum = 0;
+    for(; b < w.size() && w[b].first == w[a].first; ++b) sum += w[b].second;
+    w[out++] = std::make_pair(w[a].first, sum);
+    a = b;
+  }
+  w.resize(out);
+  double mean = 0;
+  for(const auto& e : w) mean += std::fabs(e.second);
+  mean /= double((std::max)(w.size(), std::size_t(1)));
+  for(auto& e : w) e.second = (std::max)(e.second, 1e-3 * mean);
+  return w;
+}
+
+/// The mesh minus face `puncture` mapped onto the plane with the puncture's
+/// corners fixed (`puncture_corners()`), the faces counter-clockwise: the
+/// harmonic map of Tutte's uniform weights, or with `conformal` of
+/// `conformal_edge_weights()` (the discrete conformal map). False if the
+/// solve fails.
 template <class EigenSolver>
-bool punctured_tutte(const Sphere_problem& P, int puncture, std::vector<Vec2>& uv)
+bool punctured_planar_map(const Sphere_problem& P, int puncture, bool conformal, std::vector<Vec2>& uv)
 {
   const std::size_t n = P.xyz.size();
   const Face& hole = P.faces[std::size_t(puncture)];
@@ -83,25 +161,31 @@ bool punctured_tutte(const Sphere_problem& P, int puncture, std::vector<Vec2>& u
   for(std::size_t v = 0; v < n; ++v)
     if(idx[v] == 0) idx[v] = ni++; else idx[v] = -1;
   uv.assign(n, Vec2{{ 0, 0 }});
-  // The disk's border, as its faces see it, runs a → c → b: place it counter-clockwise.
-  const double pi = 3.14159265358979323846;
+  const std::array<Vec2, 3> corners = puncture_corners(P, hole, conformal);
   const int order[3] = { hole[0], hole[2], hole[1] };
-  for(int k = 0; k < 3; ++k)
-    uv[std::size_t(order[k])] = {{ std::cos(pi / 2 + 2 * pi * k / 3), std::sin(pi / 2 + 2 * pi * k / 3) }};
+  for(int k = 0; k < 3; ++k) uv[std::size_t(order[k])] = corners[std::size_t(k)];
   if(ni == 0) return true;
-  // Each edge appears as two directed edges in a closed mesh: ½ from each.
+  std::vector<std::pair<std::uint64_t, double> > cot;
+  if(conformal) cot = conformal_edge_weights(P);
+  // Each edge of a closed mesh is seen from its two faces: half its weight from each.
+  auto half_weight = [&cot, conformal](int i, int j) {
+    if(!conformal) return 0.5;
+    const std::uint64_t key = undirected_edge_key(i, j);
+    return 0.5 * std::lower_bound(cot.begin(), cot.end(), std::make_pair(key, -std::numeric_limits<double>::infinity()))->second;
+  };
   std::vector<Eigen::Triplet<double> > trip;
   trip.reserve(P.faces.size() * 6);
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(ni, 2);
   for(const Face& t : P.faces)
     for(int k = 0; k < 3; ++k) {
       const int i = t[k], j = t[(k + 1) % 3];
+      const double w = half_weight(i, j);
       const int a = idx[std::size_t(i)], b = idx[std::size_t(j)];
-      if(a >= 0) trip.emplace_back(a, a, 0.5);
-      if(b >= 0) trip.emplace_back(b, b, 0.5);
-      if(a >= 0 && b >= 0) { trip.emplace_back(a, b, -0.5); trip.emplace_back(b, a, -0.5); }
-      else if(a >= 0) { rhs(a, 0) += 0.5 * uv[std::size_t(j)][0]; rhs(a, 1) += 0.5 * uv[std::size_t(j)][1]; }
-      else if(b >= 0) { rhs(b, 0) += 0.5 * uv[std::size_t(i)][0]; rhs(b, 1) += 0.5 * uv[std::size_t(i)][1]; }
+      if(a >= 0) trip.emplace_back(a, a, w);
+      if(b >= 0) trip.emplace_back(b, b, w);
+      if(a >= 0 && b >= 0) { trip.emplace_back(a, b, -w); trip.emplace_back(b, a, -w); }
+      else if(a >= 0) { rhs(a, 0) += w * uv[std::size_t(j)][0]; rhs(a, 1) += w * uv[std::size_t(j)][1]; }
+      else if(b >= 0) { rhs(b, 0) += w * uv[std::size_t(i)][0]; rhs(b, 1) += w * uv[std::size_t(i)][1]; }
     }
   return solve_interior_2<EigenSolver>(ni, trip, rhs, idx, uv);
 }
@@ -188,7 +272,7 @@ inline std::vector<int> extremal_faces(const Sphere_problem& P)
   return out;
 }
 
-/// The certified initial map. Candidates: the `well_shaped` best-scored
+/// The certified initial map (Tutte's, or with `conformal` the cotangent-harmonic one). Candidates: the `well_shaped` best-scored
 /// punctures, then (when `extremal`) the faces at the shape's extremes. Each
 /// is mapped and lifted at its best scale; the first certified one is kept,
 /// or with `keep_best` the certified one of least energy. (Measured: the
@@ -198,8 +282,8 @@ inline std::vector<int> extremal_faces(const Sphere_problem& P)
 /// `sphere` receives unit vectors only when one is certified.
 template <class EigenSolver>
 Sphere_initial_outcome certified_sphere_initial_map(const Sphere_problem& P, std::vector<Vec3>& sphere,
-                                                    std::size_t well_shaped = 3, bool extremal = true,
-                                                    bool keep_best = false)
+                                                    bool conformal = false, std::size_t well_shaped = 3,
+                                                    bool extremal = true, bool keep_best = false)
 {
   Sphere_initial_outcome out;
   const Area_barrier_energy energy(P.target);
@@ -214,7 +298,10 @@ Sphere_initial_outcome certified_sphere_initial_map(const Sphere_problem& P, std
   double best_E = std::numeric_limits<double>::infinity();
   for(int f : candidates) {
     ++out.attempts;
-    if(!punctured_tutte<EigenSolver>(P, f, uv)) { why << " puncture " << f << ": the Tutte solve failed;"; continue; }
+    if(!punctured_planar_map<EigenSolver>(P, f, conformal, uv)) {
+      why << " puncture " << f << ": the " << (conformal ? "cotangent" : "Tutte") << " solve failed;";
+      continue;
+    }
     // Orientation of the lift, decided once on the unit scale by the majority.
     lift_to_sphere(uv, 2, Vec2{{ 0, 0 }}, false, p);
     signed_areas_sphere(p, P.faces, u);
@@ -239,8 +326,37 @@ Sphere_initial_outcome certified_sphere_initial_map(const Sphere_problem& P, std
     if(!keep_best) break;
   }
   if(out.certified) out.d_area = flat_d_area(sphere, P.faces, P.target);
-  else out.message = "no initial spherical map could be certified after " + std::to_string(out.attempts) + " punctures:" + why.str();
+  else out.message = std::string("no ") + (conformal ? "conformal " : "") + "initial spherical map could be certified after " +
+                     std::to_string(out.attempts) + " punctures:" + why.str();
   return out;
+}
+
+/// The caller's start: `given` normalised into `sphere` and certified.
+/// Returns an empty string on success, else what is wrong (which vertex, or
+/// how many faces fold and the first).
+inline std::string certified_given_sphere_map(const Sphere_problem& P, const std::vector<Vec3>& given,
+                                              std::vector<Vec3>& sphere)
+{
+  if(given.size() != P.xyz.size())
+    return "the given initial map has " + std::to_string(given.size()) + " points for " + std::to_string(P.xyz.size()) +
+           " vertices";
+  std::vector<Vec3> p(given.size());
+  for(std::size_t v = 0; v < given.size(); ++v) {
+    const double r = norm3(given[v]);
+    if(!std::isfinite(r) || !(r > 0))
+      return "the given initial map's point of vertex " + std::to_string(v) + " is " +
+             (std::isfinite(r) ? "at the centre" : "not finite");
+    p[v] = {{ given[v][0] / r, given[v][1] / r, given[v][2] / r }};
+  }
+  const Orientation_count oc = count_orientations_sphere(p, P.faces);
+  if(!oc.all_positive()) {
+    std::ostringstream why;
+    why << "the given initial map has " << oc.inverted << " inverted and " << oc.degenerate
+        << " degenerate faces on the unit sphere by the exact predicate (first: face " << oc.first_bad << ")";
+    return why.str();
+  }
+  sphere.swap(p);
+  return std::string();
 }
 
 } // namespace dlf

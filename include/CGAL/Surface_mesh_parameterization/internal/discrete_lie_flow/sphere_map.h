@@ -30,10 +30,11 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace dlf {
 
-/// Validation, then the certified initial map `p`.
+/// Validation, then the certified initial map `p`: the caller's `given`
+/// one when not null, else the library's start `opt.sphere.start`.
 template <class EigenSolver>
 Error_code start_sphere(Sphere_problem& P, std::vector<Vec3>& p, const Discrete_lie_flow_options& opt,
-                        Discrete_lie_flow_report& R)
+                        Discrete_lie_flow_report& R, const std::vector<Vec3>* given = nullptr)
 {
   typedef std::chrono::steady_clock Clock;
   Validation check = validate_sphere_topology(P.xyz.size(), P.faces);
@@ -41,12 +42,23 @@ Error_code start_sphere(Sphere_problem& P, std::vector<Vec3>& p, const Discrete_
   check = validate_sphere_geometry(P, opt.face_density);
   if(!check.ok()) return report_failure(R, check.code, check.message);
   const Clock::time_point t0 = Clock::now();
-  const Sphere_initial_outcome init = certified_sphere_initial_map<EigenSolver>(P, p);
+  if(given) {
+    R.sphere_start = Discrete_lie_flow_sphere_start::GIVEN;
+    const std::string why = certified_given_sphere_map(P, *given, p);
+    if(!why.empty())
+      return report_failure(R, given->size() == P.xyz.size() ? int(ERROR_INITIAL_MAP_FOLDED) : int(ERROR_WRONG_PARAMETER), why);
+  } else {
+    if(opt.sphere.start == Discrete_lie_flow_sphere_start::GIVEN)
+      return report_failure(R, ERROR_WRONG_PARAMETER, "the start GIVEN needs a map (set_initial_map())");
+    R.sphere_start = opt.sphere.start;
+    const Sphere_initial_outcome init =
+      certified_sphere_initial_map<EigenSolver>(P, p, opt.sphere.start == Discrete_lie_flow_sphere_start::CONFORMAL);
+    R.initial_attempts = init.attempts;
+    if(!init.certified) return report_failure(R, ERROR_INITIAL_MAP_FOLDED, init.message);
+    R.puncture_face = init.puncture;
+    R.initial_scale = init.scale;
+  }
   R.seconds_initial = std::chrono::duration<double>(Clock::now() - t0).count();
-  R.initial_attempts = init.attempts;
-  if(!init.certified) return report_failure(R, ERROR_INITIAL_MAP_FOLDED, init.message);
-  R.puncture_face = init.puncture;
-  R.initial_scale = init.scale;
   R.face_density = face_densities(P);
   R.initial_metrics = spherical_distortion(P.xyz, p, P.faces, R.face_density);
   return OK;
@@ -57,16 +69,17 @@ Error_code start_sphere(Sphere_problem& P, std::vector<Vec3>& p, const Discrete_
 /// vectors, in vertex order, only on success. Fills `R`. In paper mode the
 /// flowing triangulation is certified at every step and the caller's
 /// triangles may fold under the result, which is reported, not refused.
+/// `given`, when not null, is the caller's start (a point per vertex).
 template <class EigenSolver>
 Error_code map_to_sphere(Sphere_problem& P, std::vector<Vec3>& points, const Discrete_lie_flow_options& opt,
-                         EigenSolver& solver, Discrete_lie_flow_report& R)
+                         EigenSolver& solver, Discrete_lie_flow_report& R, const std::vector<Vec3>* given = nullptr)
 {
   typedef std::chrono::steady_clock Clock;
   const Scoped_blas_threads threads(opt.solver_threads, P.xyz.size());
   R.vertices = P.xyz.size();
   R.faces = P.faces.size();
   std::vector<Vec3> p;
-  const Error_code started = start_sphere<EigenSolver>(P, p, opt, R);
+  const Error_code started = start_sphere<EigenSolver>(P, p, opt, R, given);
   if(started != OK) return started;
 
   const Clock::time_point t1 = Clock::now();
