@@ -299,7 +299,8 @@ py::tuple disk(const py::object& V, const py::object& F, const std::string& mode
 py::tuple sphere(const py::object& V, const py::object& F, const std::string& mode, const py::object& density,
                  const py::object& tolerance, const py::object& log_area_tolerance, const py::object& max_iterations,
                  const py::object& mu, const py::object& share_tolerance, bool literal_targets, bool delaunay_flips,
-                 bool history, const py::object& callback, const std::string& name)
+                 bool history, const std::string& start, const py::object& init_map, const py::object& callback,
+                 const std::string& name)
 {
   const Indexed_mesh input = [&] {
     try {
@@ -308,17 +309,32 @@ py::tuple sphere(const py::object& V, const py::object& F, const std::string& mo
       raise(e);
     }
   }();
+  // The caller's start: read as a mesh with the input's faces, so that its
+  // rows get the same checks as V's.
+  const std::vector<Vec3> start_points = [&] {
+    if(init_map.is_none()) return std::vector<Vec3>();
+    try {
+      return mesh_of(init_map, F).xyz;
+    } catch(const Cli_error& e) {
+      raise(Cli_error(std::string("init_map: ") + e.what()));
+    }
+  }();
   const std::vector<double> density_values = density_of(density);
   std::vector<std::string> args{ word_arg(name, "name") };
   add_flow_arguments(args, mode, tolerance, max_iterations, mu, share_tolerance, literal_targets, delaunay_flips, history);
   if(!log_area_tolerance.is_none())
     args.insert(args.end(), { "--log-area-tolerance", number(number_arg(log_area_tolerance, "log_area_tolerance")) });
+  if(start != "tutte") {
+    if(!start_points.empty()) value_error("init_map and start exclude each other");
+    args.insert(args.end(), { "--start", word_arg(start, "start") });
+  }
   dlf_cli::Sphere_settings s;
   Python_callback progress(callback);
   dlf_cli::Sphere_outcome outcome;
   try {
     if(!dlf_cli::parse_sphere_arguments(args, s)) value_error("invalid options");
     if(!density_values.empty() && tolerance.is_none()) s.options.tolerance = dlf_cli::density_tolerance;
+    if(!start_points.empty()) { s.start = "given"; s.init_map = start_points; }
     progress.install(s.options);
     py::gil_scoped_release release;
     outcome = dlf_cli::compute_sphere(input, s, density_values);
@@ -398,7 +414,8 @@ PYBIND11_MODULE(_core, m)
   m.def("sphere", &sphere, "V"_a, "F"_a, py::kw_only(), "mode"_a = "certified", "density"_a = py::none(),
         "tolerance"_a = py::none(), "log_area_tolerance"_a = py::none(), "max_iterations"_a = py::none(),
         "mu"_a = py::none(), "share_tolerance"_a = py::none(), "literal_targets"_a = false,
-        "delaunay_flips"_a = true, "history"_a = false, "callback"_a = py::none(), "name"_a = "mesh",
+        "delaunay_flips"_a = true, "history"_a = false, "start"_a = "tutte", "init_map"_a = py::none(),
+        "callback"_a = py::none(), "name"_a = "mesh",
         "Maps a closed genus-0 mesh onto the unit sphere; see discrete_lie_flow.sphere.");
   m.def("score", &score, "V"_a, "F"_a, "uv"_a, py::kw_only(), "density"_a = py::none(),
         "The distortion metrics of a map; see discrete_lie_flow.score.");

@@ -74,7 +74,7 @@ def disk(V, F, *, mode: str = "certified", border: Optional[str] = None, init: s
 def sphere(V, F, *, mode: str = "certified", density=None, tolerance: Optional[float] = None,
            log_area_tolerance: Optional[float] = None, max_iterations: Optional[int] = None,
            mu: Optional[float] = None, share_tolerance: Optional[float] = None, literal_targets: bool = False,
-           delaunay_flips: bool = True, history: bool = False,
+           delaunay_flips: bool = True, history: bool = False, start: str = "tutte", init_map=None,
            callback: Optional[Callable[[Dict[str, Any]], Optional[bool]]] = None,
            name: str = "mesh") -> Tuple[Any, Dict[str, Any]]:
     """Maps a closed genus-0 mesh onto the unit sphere, area-preserving;
@@ -83,7 +83,9 @@ def sphere(V, F, *, mode: str = "certified", density=None, tolerance: Optional[f
     points: (n, 3) float64 array on the unit sphere, every triangle
     positively oriented (exact predicate). report: the dict of
     ``dlf sphere --report``. Options as for :func:`disk`, plus
-    log_area_tolerance (``--log-area-tolerance``).
+    log_area_tolerance (``--log-area-tolerance``), start ("tutte" or
+    "conformal", ``--start``) and init_map (an (n, 3) array: the caller's
+    start, ``--init-map``; scaled onto the sphere, refused if a face folds).
 
     Raises ValueError for unsuitable input or options (e.g. not genus 0),
     FlowError (with ``.report``) when the flow fails.
@@ -91,7 +93,8 @@ def sphere(V, F, *, mode: str = "certified", density=None, tolerance: Optional[f
     return _core.sphere(V, F, mode=mode, density=density, tolerance=tolerance,
                         log_area_tolerance=log_area_tolerance, max_iterations=max_iterations, mu=mu,
                         share_tolerance=share_tolerance, literal_targets=literal_targets,
-                        delaunay_flips=delaunay_flips, history=history, callback=callback, name=name)
+                        delaunay_flips=delaunay_flips, history=history, start=start, init_map=init_map,
+                        callback=callback, name=name)
 
 
 def score(V, F, uv, *, density=None) -> Dict[str, Any]:

@@ -44,6 +44,8 @@ def sphere(
     literal_targets: bool = ...,
     delaunay_flips: bool = ...,
     history: bool = ...,
+    start: str = ...,
+    init_map: Optional[npt.ArrayLike] = ...,
     callback: Optional[Callback] = ...,
     name: str = ...,
 ) -> Tuple[npt.NDArray[np.float64], Dict[str, Any]]: ...

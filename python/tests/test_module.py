@@ -109,6 +109,23 @@ def test_sphere_matches_tool_bit_for_bit(tmp_path, ball):
     assert np.allclose(np.linalg.norm(points, axis=1), 1.0)
 
 
+def test_sphere_starts(tmp_path, ball):
+    V, F = ball
+    points, report = dlf.sphere(V, F, start="conformal")
+    run_tool("sphere", mesh_path("sphere.off"), "--start", "conformal", "-o", str(tmp_path / "s.obj"), "-q")
+    assert report["start"] == "conformal"
+    assert np.array_equal(points, read_obj(tmp_path / "s.obj", "v"))
+    # An earlier result as the start: nothing left to do.
+    again, report = dlf.sphere(V, F, init_map=3 * points)
+    assert report["start"] == "given" and report["iterations"] <= 1
+    folded = points.copy()
+    folded[[F[0][0], F[0][1]]] = folded[[F[0][1], F[0][0]]]
+    with pytest.raises(ValueError, match="ERROR_INITIAL_MAP_FOLDED"):
+        dlf.sphere(V, F, init_map=folded)
+    with pytest.raises(ValueError, match="init_map and start exclude each other"):
+        dlf.sphere(V, F, init_map=points, start="conformal")
+
+
 def test_density_matches_tool(tmp_path, nefertiti):
     V, F = nefertiti
     density = 1.0 + (V[:, 0] > np.median(V[:, 0]))  # per vertex: 2 on one half
