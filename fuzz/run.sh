@@ -6,6 +6,7 @@
 #   build-fuzz/dlf_fuzz build-fuzz/artifacts/crash-...
 #   bash fuzz/run.sh 600          # ten minutes
 #   bash fuzz/run.sh 0            # build only
+#   FUZZ_RUNS=80000 bash fuzz/run.sh   # what CI runs: 80,000 inputs, seed 1, the same on every machine
 # Needs clang and libclang-rt (Debian: apt-get install clang libclang-rt-14-dev).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -42,15 +43,30 @@ done
 if [[ ! -x "$BUILD_DIR/dlf_fuzz" || -n "$(find "${objects[@]}" -newer "$BUILD_DIR/dlf_fuzz" | head -1)" ]]; then
   "$CXX" "${flags[@]}" "${objects[@]}" -lgmp -lmpfr -o "$BUILD_DIR/dlf_fuzz"
 fi
-[[ "$SECONDS_TO_RUN" -gt 0 ]] || exit 0
+[[ "$SECONDS_TO_RUN" -gt 0 || -n "${FUZZ_RUNS:-}" ]] || exit 0
 
-# One fuzzing process at a time (-fork=1: a child that dies is replaced and
-# its input kept in artifacts/, so one run reports every finding); the
-# machines this runs on are shared.
 export TMPDIR="$PWD/$BUILD_DIR/tmp"
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1:suppressions=$PWD/fuzz/ubsan.supp}"
 set +e
+if [[ -n "${FUZZ_RUNS:-}" ]]; then
+  # Reproducible: FUZZ_RUNS inputs from the seeds alone, in one process,
+  # with a fixed random seed, so that any machine explores the same inputs
+  # (CI runs this; a finding stops the run and is written to artifacts/).
+  rm -rf "$BUILD_DIR/fixed-corpus"
+  mkdir -p "$BUILD_DIR/fixed-corpus"
+  nice -n 19 "$BUILD_DIR/dlf_fuzz" -seed="${FUZZ_SEED:-1}" -runs="$FUZZ_RUNS" -timeout=20 -rss_limit_mb=2048 \
+    -max_len=8192 -dict=fuzz/mesh.dict -artifact_prefix="$BUILD_DIR/artifacts/" -print_final_stats=1 \
+    "$BUILD_DIR/fixed-corpus" fuzz/seeds 2>&1 | tee "$BUILD_DIR/last_run.log" | grep -E '^#[0-9]+.*(pulse|DONE)|ERROR|SUMMARY|Test unit written|Done [0-9]+ runs'
+  status=${PIPESTATUS[0]}
+  set -e
+  echo "fuzz: exit $status after $FUZZ_RUNS runs (seed ${FUZZ_SEED:-1}); log $BUILD_DIR/last_run.log; $(ls "$BUILD_DIR/artifacts" | wc -l) artifacts in $BUILD_DIR/artifacts/"
+  exit "$status"
+fi
+# Exploratory: one fuzzing process at a time (-fork=1: a child that dies is
+# replaced and its input kept in artifacts/, so one run reports every
+# finding) for SECONDS, from the kept corpus; the machines this runs on are
+# shared.
 nice -n 19 "$BUILD_DIR/dlf_fuzz" -max_total_time="$SECONDS_TO_RUN" -timeout=20 -rss_limit_mb=2048 \
   -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
   -max_len=8192 -dict=fuzz/mesh.dict -artifact_prefix="$BUILD_DIR/artifacts/" -print_final_stats=1 \

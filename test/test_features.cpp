@@ -17,6 +17,7 @@
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_density.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_sphere_3.h>
+#include <CGAL/Surface_mesh_parameterization/Given_uv_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Square_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/square_border_corners.h>
@@ -763,4 +764,81 @@ TEST(Features, SolverThreadsAreSetForTheFlowAndRestored)
   EXPECT_EQ(threads_during(0, 1), 1);
   setenv("OPENBLAS_NUM_THREADS", "3", 1);
   EXPECT_EQ(threads_during(0), 3);
+}
+
+// A caller's own start onto a non-convex domain (the paper's Fig. 10): an
+// L-shaped grid, lifted to a bumpy surface, starts from its flat L. With
+// the border FREE the flow keeps the L: every border uv stays on the L's
+// outline, every face positive by the exact predicate, the report's start
+// is the given map's D_area (recomputed here), and D_area reaches 2.01. A
+// given map with a fold is refused.
+TEST(Features, GivenUvStartOnANonConvexDomain)
+{
+  SM sm;
+  const int n = 12; // (2n + 1)² grid points, the quadrant x > n, y > n removed
+  std::map<std::pair<int, int>, SM_vertex> at;
+  auto inside = [n](int i, int j) { return i >= 0 && j >= 0 && i <= 2 * n && j <= 2 * n && !(i > n && j > n); };
+  for(int i = 0; i <= 2 * n; ++i)
+    for(int j = 0; j <= 2 * n; ++j)
+      if(inside(i, j)) {
+        const double x = double(i) / n, y = double(j) / n;
+        at[{ i, j }] = sm.add_vertex(Point_3(x, y, std::sin(3 * x) * std::cos(2 * y)));
+      }
+  for(int i = 0; i < 2 * n; ++i)
+    for(int j = 0; j < 2 * n; ++j)
+      if(inside(i, j) && inside(i + 1, j) && inside(i, j + 1) && inside(i + 1, j + 1) && !(i >= n && j >= n)) {
+        sm.add_face(at[{ i, j }], at[{ i + 1, j }], at[{ i + 1, j + 1 }]);
+        sm.add_face(at[{ i, j }], at[{ i + 1, j + 1 }], at[{ i, j + 1 }]);
+      }
+  UV_map flat = sm.add_property_map<SM_vertex, Point_2>("v:flat").first;
+  for(SM_vertex v : vertices(sm)) flat[v] = Point_2(sm.point(v).x(), sm.point(v).y());
+  typedef SMP::Given_uv_parameterizer_3<SM, UV_map> Given;
+  typedef SMP::Discrete_lie_flow_parameterizer_3<SM, Given> Given_dlf;
+  SMP::Discrete_lie_flow_options o;
+  o.disk.border = SMP::Discrete_lie_flow_border::FREE;
+  SM_halfedge bhd;
+  for(SM_halfedge h : halfedges(sm))
+    if(is_border(h, sm)) { bhd = h; break; }
+  UV_map uv = sm.add_property_map<SM_vertex, Point_2>("v:uv").first;
+  Given_dlf dlf(Given(flat), o);
+  ASSERT_EQ(SMP::parameterize(sm, dlf, bhd, uv), SMP::OK) << dlf.report().message;
+  const SMP::Discrete_lie_flow_report& r = dlf.report();
+  EXPECT_LE(r.final_d_area, 2.01 + 1e-9);
+  // D_area of the flat L against the surface, recomputed.
+  double A = 0, U = 0;
+  std::vector<std::pair<double, double> > au;
+  for(SM_face f : faces(sm)) {
+    const auto c = corners(sm, f);
+    const Point_3 &p = sm.point(c[0]), &q = sm.point(c[1]), &t = sm.point(c[2]);
+    const double a = 0.5 * std::sqrt(CGAL::cross_product(q - p, t - p).squared_length());
+    const double u = 0.5 * CGAL::determinant(flat[c[1]] - flat[c[0]], flat[c[2]] - flat[c[0]]);
+    au.emplace_back(a, u);
+    A += a; U += u;
+  }
+  double d = 0;
+  for(const auto& x : au) { const double ratio = (x.second / U) / (x.first / A); d += x.first / A * (ratio + 1 / ratio); }
+  EXPECT_NEAR(r.initial_d_area, d, 1e-9);
+  EXPECT_GT(d, 2.02);
+  for(SM_face f : faces(sm)) {
+    const auto c = corners(sm, f);
+    EXPECT_EQ(CGAL::orientation(EP(uv[c[0]].x(), uv[c[0]].y()), EP(uv[c[1]].x(), uv[c[1]].y()), EP(uv[c[2]].x(), uv[c[2]].y())),
+              CGAL::LEFT_TURN);
+  }
+  // The L's outline: x = 0, y = 0, x = 2, y = 2 below x = 1 ... as segments.
+  const double L[6][4] = { { 0, 0, 2, 0 }, { 2, 0, 2, 1 }, { 2, 1, 1, 1 }, { 1, 1, 1, 2 }, { 1, 2, 0, 2 }, { 0, 2, 0, 0 } };
+  for(SM_halfedge h : halfedges_around_face(bhd, sm)) {
+    const Point_2 p = uv[target(h, sm)];
+    double best = 1;
+    for(const auto& s : L) {
+      const double dx = s[2] - s[0], dy = s[3] - s[1];
+      const double t = std::clamp(((p.x() - s[0]) * dx + (p.y() - s[1]) * dy) / (dx * dx + dy * dy), 0., 1.);
+      best = (std::min)(best, std::hypot(p.x() - s[0] - t * dx, p.y() - s[1] - t * dy));
+    }
+    EXPECT_LT(best, 1e-9) << "border vertex " << target(h, sm) << " left the L";
+  }
+  // A fold in the given map is refused.
+  SM_vertex a = at[{ 3, 3 }], b = at[{ 4, 3 }];
+  std::swap(flat[a], flat[b]);
+  Given_dlf folded(Given(flat), o);
+  EXPECT_EQ(SMP::parameterize(sm, folded, bhd, uv), SMP::ERROR_INITIAL_MAP_FOLDED);
 }

@@ -13,12 +13,18 @@
 #include <CGAL/Surface_mesh_parameterization/ARAP_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Given_uv_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Square_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Symmetric_barycentric_mapping_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Two_vertices_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/square_border_corners.h>
+
+#include <boost/property_map/function_property_map.hpp>
+
+#include <type_traits>
+#include <vector>
 
 namespace dlf_cli {
 
@@ -65,33 +71,6 @@ Disk_run run_fixed_border_init(const Disk_settings& settings, Run run)
     settings, run);
 }
 
-/// The caller's own initial map (`--init-uv`): uv per vertex index, as the
-/// input lists its vertices. The flow checks that it is flip-free.
-template <class Mesh>
-class Given_uv_parameterizer
-{
-public:
-  explicit Given_uv_parameterizer(const std::vector<Vec2>& uv) : m_uv(&uv) {}
-  template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>
-  CGAL::Surface_mesh_parameterization::Error_code
-  parameterize(Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_descriptor, VertexUVmap uvmap,
-               VertexIndexMap vimap, VertexParameterizedMap vpmap)
-  {
-    typedef typename boost::property_traits<VertexUVmap>::value_type Point_2;
-    for(auto v : vertices(mesh)) {
-      const std::size_t i = std::size_t(get(vimap, v));
-      if(i >= m_uv->size()) return CGAL::Surface_mesh_parameterization::ERROR_WRONG_PARAMETER;
-      put(uvmap, v, Point_2((*m_uv)[i][0], (*m_uv)[i][1]));
-      put(vpmap, v, true);
-    }
-    return CGAL::Surface_mesh_parameterization::OK;
-  }
-  bool is_border_convex() const { return false; }
-
-private:
-  const std::vector<Vec2>* m_uv;
-};
-
 /// lscm or arap, both pinned by two vertices (CGAL's Two_vertices_parameterizer_3,
 /// their default border); or the caller's map (`--init-uv`).
 template <class Mesh, class Run>
@@ -99,7 +78,15 @@ Disk_run run_free_border_init(const Disk_settings& settings, Run run)
 {
   namespace SMP = CGAL::Surface_mesh_parameterization;
   typedef SMP::Two_vertices_parameterizer_3<Mesh> Two_vertices;
-  if(settings.init == "uv") return run(Given_uv_parameterizer<Mesh>(settings.init_uv));
+  // The caller's map (`--init-uv`, on the input's Surface_mesh only: input
+  // vertex i is its vertex i, and the file has one uv per input vertex).
+  if constexpr(std::is_same<Mesh, Surface_mesh>::value)
+    if(settings.init == "uv") {
+      const std::vector<Vec2>& uv = settings.init_uv;
+      const auto given = boost::make_function_property_map<vertex_descriptor>(
+        [&uv](vertex_descriptor v) { return Kernel::Point_2(uv[v.idx()][0], uv[v.idx()][1]); });
+      return run(SMP::Given_uv_parameterizer_3<Mesh, std::remove_const_t<decltype(given)> >(given));
+    }
   if(settings.init == "arap") return run(SMP::ARAP_parameterizer_3<Mesh, Two_vertices>());
   return run(SMP::LSCM_parameterizer_3<Mesh, Two_vertices>());
 }
