@@ -45,7 +45,7 @@ if [[ ! -x "$BUILD_DIR/dlf_fuzz" || -n "$(find "${objects[@]}" -newer "$BUILD_DI
 fi
 [[ "$SECONDS_TO_RUN" -gt 0 || -n "${FUZZ_RUNS:-}" ]] || exit 0
 
-export TMPDIR="$PWD/$BUILD_DIR/tmp"
+export TMPDIR="$(cd "$BUILD_DIR" && pwd)/tmp"
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1:suppressions=$PWD/fuzz/ubsan.supp}"
 set +e
