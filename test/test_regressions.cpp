@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -99,6 +100,46 @@ TEST(Regression, BinaryOffNegativeCountsAreRefused)
 {
   const std::string text = binary_off_header(std::uint32_t(-1), 1) + std::string(64, '\0');
   EXPECT_NE(cli_error_of(text).find("cannot read"), std::string::npos);
+}
+
+// CGAL 5.5's binary OFF header computed 2 × the edge count in an int
+// (signed overflow on 1,258,291,200 edges), and its face reader allocated a
+// face of the size the file claims (5.6 GB) before reading it: binary OFF is
+// read by the tool now, every count checked against the bytes left.
+TEST(Regression, BinaryOffIsReadWithItsCountsChecked)
+{
+  auto word = [](std::uint32_t n) {
+    std::string w;
+    for(int b = 3; b >= 0; --b) w += char((n >> (8 * b)) & 0xff);
+    return w;
+  };
+  auto real = [&word](float x) {
+    std::uint32_t u;
+    std::memcpy(&u, &x, 4);
+    return word(u);
+  };
+  std::string vertices;
+  for(float x : { 0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f }) vertices += real(x);
+  auto file = [&](std::uint32_t edges, const std::string& faces) {
+    return "OFF BINARY\n" + word(3) + word(1) + word(edges) + vertices + faces;
+  };
+  const std::string face = word(3) + word(0) + word(1) + word(2);
+  // A valid file, with a colour after the face, and a huge edge count (unused).
+  const Indexed_mesh m = read_text(file(1258291200u, face + word(3) + real(1) + real(0) + real(0)));
+  ASSERT_EQ(m.xyz.size(), 3u);
+  ASSERT_EQ(m.faces.size(), 1u);
+  EXPECT_EQ(m.xyz[1][0], 1.);
+  EXPECT_EQ(m.xyz[2][1], 1.);
+  EXPECT_EQ(m.faces[0][2], 2);
+  // A face size beyond the file, an index out of range, a negative colour count, a truncated face.
+  EXPECT_NE(cli_error_of(file(0, word(1400000000u) + word(0))).find("cannot read"), std::string::npos);
+  EXPECT_NE(cli_error_of(file(0, word(3) + word(0) + word(1) + word(3) + word(0))).find("cannot read"), std::string::npos);
+  EXPECT_NE(cli_error_of(file(0, face + word(std::uint32_t(-2)))).find("cannot read"), std::string::npos);
+  EXPECT_NE(cli_error_of(file(0, word(3) + word(0))).find("cannot read"), std::string::npos);
+  // Binary variants with colours or normals are refused by name.
+  std::string coloured = file(0, face + word(0));
+  coloured.replace(0, 3, "COFF");
+  EXPECT_NE(cli_error_of(coloured).find("binary COFF"), std::string::npos);
 }
 
 // CGAL 5.5 reads a colour past the values of a vertex line that has fewer

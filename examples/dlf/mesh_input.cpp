@@ -4,7 +4,6 @@
 #include "mesh_input.h"
 #include "cli_error.h"
 
-#include <CGAL/IO/OFF.h>
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -15,6 +14,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <locale>
@@ -89,8 +89,11 @@ bool has_off_extension(const std::string& path)
 // The text format is parsed with CGAL's conventions (header keyword
 // [ST][C][N][4][n]OFF, '#' comments, one vertex or face per line, extra
 // numbers on a line ignored: the tool needs no colours, normals or texture
-// coordinates); binary OFF goes to CGAL's reader after the counts are checked
-// against the file's size. Returns false when the file is not valid OFF.
+// coordinates). Binary OFF is read here too (CGAL's binary header overflowed
+// an int on a large edge count, and a face size of 10⁹ made it allocate
+// gigabytes: fuzz findings); its variants with colours, normals or texture
+// coordinates are refused with a message. Returns false when the file is not
+// valid OFF.
 class Off_text_reader
 {
 public:
@@ -110,7 +113,12 @@ public:
     if(dimensional) ++j;
     if(keyword.compare(j, std::string::npos, "OFF") != 0) return false;
     skip_blanks_and_comments();
-    if(m_text.compare(m_pos, 6, "BINARY") == 0) return read_binary(path, dimensional, points, polygons);
+    if(m_text.compare(m_pos, 6, "BINARY") == 0) {
+      if(j != 0)
+        throw Cli_error(quoted(path) + ": binary " + keyword + " (with colours, normals, texture coordinates or other "
+                        "dimensions) is not read; plain binary OFF and every text OFF are");
+      return read_binary(path, points, polygons);
+    }
 
     long long dimension = 3, nv = -1, nf = -1, ne = -1;
     if(dimensional && !integer(dimension)) return false;
@@ -203,31 +211,58 @@ private:
     }
   }
 
-  bool read_binary(const std::string& path, bool dimensional, std::vector<Point_3>& points,
-                   std::vector<Polygon>& polygons)
+  // Plain binary OFF (Geomview's layout): after the header line, big-endian
+  // 32-bit counts (vertices, faces, edges), three floats per vertex, and per
+  // face its size, its indices and a colour count followed by that many
+  // floats (ignored). Every count is checked against the bytes left before
+  // anything is allocated.
+  bool read_binary(const std::string& path, std::vector<Point_3>& points, std::vector<Polygon>& polygons)
   {
-    // The counts are big-endian 32-bit integers after the header line.
     std::size_t at = m_text.find('\n', m_pos);
     if(at == std::string::npos) return false;
     ++at;
-    long long counts[4] = { 0, 0, 0, 0 };
-    const int n = dimensional ? 4 : 3;
-    if(m_text.size() < at + 4 * std::size_t(n)) return false;
-    for(int k = 0; k < n; ++k) {
+    auto left = [&]() { return m_text.size() - at; };
+    auto word32 = [&](std::uint32_t& u) {
+      if(left() < 4) return false;
+      u = 0;
+      for(int b = 0; b < 4; ++b) u = (u << 8) | static_cast<unsigned char>(m_text[at++]);
+      return true;
+    };
+    auto integer32 = [&](long long& n) {
       std::uint32_t u = 0;
-      for(int b = 0; b < 4; ++b) u = (u << 8) | static_cast<unsigned char>(m_text[at + 4 * std::size_t(k) + std::size_t(b)]);
-      counts[k] = static_cast<std::int32_t>(u);
+      if(!word32(u)) return false;
+      n = static_cast<std::int32_t>(u);
+      return true;
+    };
+    long long nv = 0, nf = 0, ne = 0;
+    if(!integer32(nv) || !integer32(nf) || !integer32(ne) || nv < 0 || nf < 0) return false;
+    // A vertex takes 12 bytes (three floats), a face at least 8 (its size and colour count).
+    check_counts(path, nv, nf, 12. * double(nv) + 8. * double(nf));
+    points.reserve(std::size_t(nv));
+    for(long long i = 0; i < nv; ++i) {
+      float c[3];
+      for(float& x : c) {
+        std::uint32_t u = 0;
+        if(!word32(u)) return false;
+        std::memcpy(&x, &u, sizeof x);
+      }
+      points.push_back(Point_3(c[0], c[1], c[2]));
     }
-    const long long nv = counts[dimensional ? 1 : 0], nf = counts[dimensional ? 2 : 1];
-    if(nv < 0 || nf < 0) return false;
-    // A vertex takes at least 12 bytes (three floats), a face 4 (its size).
-    check_counts(path, nv, nf, 12. * double(nv) + 4. * double(nf));
-    std::istringstream in(m_text, std::ios::binary);
-    try {
-      return CGAL::IO::read_OFF(in, points, polygons);
-    } catch(const std::length_error&) { // a negative face size, read as std::size_t
-      return false;
+    polygons.reserve(std::size_t(nf));
+    for(long long f = 0; f < nf; ++f) {
+      long long k = 0, colours = 0;
+      if(!integer32(k) || k < 0 || double(k) * 4 > double(left())) return false;
+      Polygon polygon(static_cast<std::size_t>(k));
+      for(std::size_t& i : polygon) {
+        long long v = 0;
+        if(!integer32(v) || v < 0 || v >= nv) return false;
+        i = static_cast<std::size_t>(v);
+      }
+      if(!integer32(colours) || colours < 0 || double(colours) * 4 > double(left())) return false;
+      at += 4 * static_cast<std::size_t>(colours);
+      polygons.push_back(std::move(polygon));
     }
+    return true;
   }
 
   void check_counts(const std::string& path, long long nv, long long nf, double bytes) const
