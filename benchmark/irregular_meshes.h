@@ -16,9 +16,9 @@
 //    (CGAL::Surface_mesh_simplification, edge-length cost, so the collapses
 //    are where the edges are short, midpoint placement): uneven sizes;
 //  - needlesK: a maximal matching of edges, each matched edge split at K
-//    points spaced geometrically (segments spanning a factor 100), both
+//    points spaced geometrically (segments spanning a factor 10), both
 //    adjacent triangles split into fans of needles at them (as triangle
-//    strips converted to triangles are).
+//    strips converted to triangles are); with jitter, min angles near 1°.
 // Spec syntax, after the file and its subdivision: MESH+loop1+jitter90+needles4.
 
 #ifndef DLF_BENCHMARK_IRREGULAR_MESHES_H
@@ -182,7 +182,7 @@ void needle_strips(CGAL::Surface_mesh<Point>& mesh, int k, unsigned seed = 2)
     split_of[f] = h;
     split_of[g] = o;
   }
-  // Split points: geometric segment lengths spanning a factor 100, the small
+  // Split points: geometric segment lengths spanning a factor 10, the small
   // end at a random side.
   std::vector<double> t(std::size_t(k) + 2);
   Mesh out;
@@ -192,7 +192,7 @@ void needle_strips(CGAL::Surface_mesh<Point>& mesh, int k, unsigned seed = 2)
     const Halfedge h = fh.second;
     const Vertex a = mesh.source(h), b = mesh.target(h);
     if(points_of.count(std::make_pair(b, a))) continue;
-    const double ratio = std::pow(100., 1. / (std::max)(k, 1));
+    const double ratio = std::pow(10., 1. / (std::max)(k, 1));
     double sum = 0, len = 1;
     std::vector<double> seg(std::size_t(k) + 1);
     for(double& x : seg) { x = len; sum += len; len *= ratio; }

@@ -859,19 +859,26 @@ TEST(Sphere_map, IrregularMeshes)
 TEST(Sphere_flow, CappedStepsDoNotShrinkTheRegularization)
 {
   // The polish's ε shrinks only after a full step; a step cut short by a
-  // face's critical root (no halvings) is no evidence that the model holds.
-  D::Flow_step full, capped, tiny, halved;
+  // face's critical root (no halvings) is no evidence that the model holds:
+  // ε grows, up to the ceiling (never lowered by it); two halvings: × 4.
+  D::Flow_step full, capped, tiny, halved, once;
   full.lambda = 1;
   capped.lambda = 0.3;
   tiny.lambda = 1e-3;
   halved.lambda = 0.5;
   halved.halvings = 2;
-  EXPECT_DOUBLE_EQ(D::sphere_regularization(1e-2, full), 2.5e-3);
-  EXPECT_DOUBLE_EQ(D::sphere_regularization(1e-2, capped), 1e-2 / 0.3);
-  EXPECT_DOUBLE_EQ(D::sphere_regularization(1e-2, tiny), 4e-2);
-  EXPECT_DOUBLE_EQ(D::sphere_regularization(1e-2, halved), 2e-2);
-  EXPECT_DOUBLE_EQ(D::sphere_regularization(1e-8, full), 1e-8);
-  EXPECT_DOUBLE_EQ(D::sphere_regularization(1e4, tiny), 1e4);
+  once.lambda = 0.6;
+  once.halvings = 1;
+  const double ceiling = 1e-2;
+  EXPECT_DOUBLE_EQ(D::sphere_regularization(1e-2, full, ceiling), 2.5e-3);
+  EXPECT_DOUBLE_EQ(D::sphere_regularization(1e-3, capped, ceiling), 1e-3 / 0.3);
+  EXPECT_DOUBLE_EQ(D::sphere_regularization(1e-3, tiny, ceiling), 4e-3);
+  EXPECT_DOUBLE_EQ(D::sphere_regularization(5e-3, tiny, ceiling), 1e-2);
+  EXPECT_DOUBLE_EQ(D::sphere_regularization(1e-1, tiny, ceiling), 1e-1);
+  EXPECT_DOUBLE_EQ(D::sphere_regularization(1e-2, halved, ceiling), 4e-2);
+  EXPECT_DOUBLE_EQ(D::sphere_regularization(1e-3, once, ceiling), 1e-3);
+  EXPECT_DOUBLE_EQ(D::sphere_regularization(1e-8, full, ceiling), 1e-8);
+  EXPECT_DOUBLE_EQ(D::sphere_regularization(1e4, halved, ceiling), 1e4);
 }
 
 TEST(Sphere_map, TinyMeshes)
