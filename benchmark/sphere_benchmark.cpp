@@ -34,6 +34,7 @@
 #include <nlohmann/json.hpp>
 
 #include "benchmark_utilities.h"
+#include "irregular_meshes.h"
 
 #include <time.h>
 
@@ -98,10 +99,14 @@ static std::string not_a_sphere(SM& mesh) // non-const: a temporary face propert
 }
 
 /// Reads `spec` ("name.off", or "name.off+loopK" / "name.off+midK" for K
-/// steps of Loop / midpoint subdivision) from `dir`; on false, `why` says what
-/// disqualifies it.
-static bool load_mesh(const std::string& spec, const fs::path& dir, SM& mesh, std::string& why)
+/// steps of Loop / midpoint subdivision, then optionally the irregularising
+/// steps of irregular_meshes.h: "+jitterK", "+decimateK", "+needlesK") from
+/// `dir`; on false, `why` says what disqualifies it.
+static bool load_mesh(const std::string& full_spec, const fs::path& dir, SM& mesh, std::string& why)
 {
+  std::string spec;
+  std::vector<Irregular_step> irregular;
+  if(!split_irregular_spec(full_spec, spec, irregular, why)) return false;
   Mesh_spec parsed;
   if(!parse_mesh_spec(spec, parsed, why)) return false;
   const std::string& file = parsed.file;
@@ -119,7 +124,8 @@ static bool load_mesh(const std::string& spec, const fs::path& dir, SM& mesh, st
     why = not_a_sphere(mesh);
     if(!why.empty()) return false;
     subdivide(mesh, parsed);
-    if(parsed.loops > 0 || parsed.midpoints > 0) why = not_a_sphere(mesh);
+    make_irregular(mesh, irregular);
+    if(parsed.loops > 0 || parsed.midpoints > 0 || !irregular.empty()) why = not_a_sphere(mesh);
   } catch(const std::exception& e) {
     why = "cannot read " + file + ": " + e.what();
   }
@@ -148,10 +154,55 @@ static json metrics_json(const SMP::Discrete_lie_flow_distortion& d)
 
 /// Runs the spherical DLF with default options on `mesh` and checks its
 /// output; failures (an error code or an exception) become rows too.
+/// The smallest angle (degrees) and the area over the mean area of every
+/// face of `mesh`, in the order of faces(mesh) (the flow's face indices).
+static void face_shapes(const SM& mesh, std::vector<double>& min_angle, std::vector<double>& relative_area)
+{
+  min_angle.clear();
+  relative_area.clear();
+  double total = 0;
+  for(face_descriptor f : faces(mesh)) {
+    const auto h = halfedge(f, mesh);
+    const K::Point_3 P[3] = { mesh.point(source(h, mesh)), mesh.point(target(h, mesh)), mesh.point(target(next(h, mesh), mesh)) };
+    double smallest = 180;
+    for(int k = 0; k < 3; ++k) {
+      const K::Vector_3 a = P[(k + 1) % 3] - P[k], b = P[(k + 2) % 3] - P[k];
+      smallest = (std::min)(smallest, std::atan2(std::sqrt(CGAL::cross_product(a, b).squared_length()), a * b) * 180 / CGAL_PI);
+    }
+    min_angle.push_back(smallest);
+    relative_area.push_back(std::sqrt(CGAL::cross_product(P[1] - P[0], P[2] - P[0]).squared_length()) / 2);
+    total += relative_area.back();
+  }
+  for(double& a : relative_area) a /= total / double(relative_area.size());
+}
+
+static bool trace_iterations = false; // --trace
+
 static json run_sphere(const SM& mesh)
 {
   json j;
   SMP::Discrete_lie_flow_sphere_parameterizer_3<SM> dlf; // the library's defaults
+  // The callback only watches: the phases' split (the polish starts once
+  // D_area < 2.05, sphere_certified_flow.h) and, with --trace, the faces that
+  // limit the steps.
+  std::vector<double> min_angle, relative_area;
+  if(trace_iterations) face_shapes(mesh, min_angle, relative_area);
+  std::size_t opening_iterations = 0;
+  double opening_seconds = 0;
+  bool polishing = false;
+  dlf.options().callback = [&](const SMP::Discrete_lie_flow_iteration& it) {
+    if(!polishing && it.d_area < 2.05) polishing = true;
+    if(!polishing) { opening_iterations = it.iteration; opening_seconds = it.seconds; }
+    if(trace_iterations) {
+      std::cerr << "  it " << it.iteration << " t " << fmt(it.seconds, 2) << " D " << fmt(it.d_area, 5) << " step " << it.step
+                << " crit " << it.critical_step << " back " << it.backtracks;
+      if(it.limiting_face >= 0 && std::size_t(it.limiting_face) < min_angle.size())
+        std::cerr << " limiting face " << it.limiting_face << " (min angle " << fmt(min_angle[std::size_t(it.limiting_face)], 2)
+                  << "°, area/mean " << relative_area[std::size_t(it.limiting_face)] << ")";
+      std::cerr << "\n";
+    }
+    return true;
+  };
   SM m = mesh; // the property map is added to a copy: the input stays as read
   Sphere_map sphere = m.add_property_map<SM::Vertex_index, K::Point_3>("v:sphere", K::Point_3(0, 0, 0)).first;
   SMP::Error_code status = SMP::ERROR_WRONG_PARAMETER;
@@ -177,6 +228,8 @@ static json run_sphere(const SM& mesh)
   j["seconds_solve"] = R.seconds_solve;
   j["seconds_step"] = R.seconds_step;
   j["iterations"] = R.iterations;
+  j["opening_iterations"] = opening_iterations;
+  j["seconds_opening"] = opening_seconds;
   j["stop_reason"] = SMP::discrete_lie_flow_stop_reason_name(R.stop_reason);
   j["initial_attempts"] = R.initial_attempts;
   j["puncture_face"] = R.puncture_face;
@@ -216,6 +269,32 @@ static json run_sphere(const SM& mesh)
   return j;
 }
 
+// The large irregular meshes' goals: status ok, 0 inverted, D_area <= 2.01,
+// and at most this many seconds per 100K faces (the whole call).
+static const double goal_seconds_per_100k = 10;
+
+/// The large irregular section's goals that `m` misses.
+static std::vector<std::string> missed_irregular_goals(const json& m)
+{
+  const json& r = m["run"];
+  if(r["status"] != "ok") return { "status" };
+  std::vector<std::string> missed;
+  if(std::size_t(r["inverted_faces"]) + std::size_t(r["degenerate_faces"]) != 0) missed.push_back("inverted");
+  if(!(double(r["final"]["d_area"]) <= goal_d_area)) missed.push_back("d_area");
+  if(!(double(r["seconds"]) <= goal_seconds_per_100k * double(m["F"]) / 1e5)) missed.push_back("time");
+  return missed;
+}
+
+// Coarse CAD meshes whose own triangles hold the mean |log r| above 0.02 once
+// D_area <= 2.01 (doc/sphere.md, "Coarse connectivity"): accepted exceptions
+// for that goal only; D_area <= 2.01 and 0 inverted still hold for them.
+static bool mean_log_r_exception(const std::string& mesh)
+{
+  for(const char* name : { "part.off", "oblong.off", "oblong-shuffled.off", "cactus.off", "dino.off", "bull.off" })
+    if(mesh == name) return true;
+  return false;
+}
+
 /// The goals of the issue that `r` misses (empty: it meets them all).
 static std::vector<std::string> missed_goals(const json& r)
 {
@@ -252,11 +331,44 @@ static void table(std::ostream& out, const json& rows)
     const std::vector<std::string> missed = m["missed_goals"];
     std::string goals = missed.empty() ? "yes" : "no:";
     for(const std::string& g : missed) goals += " " + g;
+    if(!missed.empty() && mean_log_r_exception(m["mesh"]) &&
+       std::all_of(missed.begin(), missed.end(), [](const std::string& g) { return g == "mean|log r|" || g == "stop"; }))
+      goals += " (accepted: coarse CAD floor)";
     out << fmt_time(r["seconds_initial"]) << " | " << fmt_time(r["seconds_flow"]) << " | " << fmt_time(r["seconds"]) << " | "
         << std::size_t(r["iterations"]) << " | " << std::string(r["stop_reason"]) << " | "
         << fmt(r["initial"]["d_area"], 4) << " | " << fmt(r["final"]["d_area"], 4) << " | "
         << fmt(r["final"]["log_area_mean_abs"], 4) << " | " << fmt(r["final"]["log_area_max_abs"], 3) << " | "
         << inverted << " | " << goals << " |\n";
+  }
+  out << "\n";
+}
+
+/// The large irregular section: the meshes' shapes, the phases' split, the
+/// time per 100K faces.
+static void irregular_table(std::ostream& out, const json& rows)
+{
+  out << "| mesh | faces | min angle | area span | iterations (opening + polish) | s initial | s opening | s polish"
+         " | s total | s per 100K faces | final D_area | mean \\|log r\\| | inverted | goals |\n"
+         "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
+  for(const json& m : rows) {
+    const json& r = m["run"];
+    out << "| " << std::string(m["mesh"]) << " | " << std::size_t(m["F"]) << " | " << fmt(m["min_angle_degrees"], 2) << "° | "
+        << fmt(m["area_decades"], 1) << " decades | ";
+    if(r["status"] != "ok") {
+      out << "- | - | - | - | " << fmt_time(r["seconds"]) << " | - | - | - | - | **" << std::string(r["status"]) << "** |\n";
+      continue;
+    }
+    const std::size_t it = r["iterations"], opening = r["opening_iterations"];
+    const double flow = r["seconds_flow"], opening_s = r["seconds_opening"];
+    std::string inverted = std::to_string(std::size_t(r["inverted_faces"]));
+    if(std::size_t(r["degenerate_faces"]) > 0) inverted += " (+" + std::to_string(std::size_t(r["degenerate_faces"])) + " degen.)";
+    const std::vector<std::string> missed = m["missed_goals"];
+    std::string goals = missed.empty() ? "yes" : "no:";
+    for(const std::string& g : missed) goals += " " + g;
+    out << it << " (" << opening << " + " << (it - opening) << ") | " << fmt_time(r["seconds_initial"]) << " | "
+        << fmt_time(opening_s) << " | " << fmt_time(flow - opening_s) << " | " << fmt_time(r["seconds"]) << " | "
+        << fmt(double(r["seconds"]) * 1e5 / double(m["F"]), 2) << " | " << fmt(r["final"]["d_area"], 4) << " | "
+        << fmt(r["final"]["log_area_mean_abs"], 4) << " | " << inverted << " | " << goals << " |\n";
   }
   out << "\n";
 }
@@ -267,7 +379,7 @@ static void table(std::ostream& out, const json& rows)
 
 int main(int argc, char** argv)
 {
-  std::string data_dir, meshes_arg, large_arg, refined_arg, speed_mesh, json_out, md_out;
+  std::string data_dir, meshes_arg, large_arg, irregular_arg, refined_arg, speed_mesh, json_out, md_out, write_dir;
   po::options_description desc(
     "sphere_benchmark: the spherical Discrete Lie Flow (default options) on closed genus-0 meshes, in one run.\n"
     "Mesh names: files in <data-dir>/meshes; NAME+loopK / NAME+midK means K steps of Loop / midpoint subdivision.\nOptions");
@@ -279,11 +391,19 @@ int main(int argc, char** argv)
      "with at least 200 faces)")
     ("large", po::value<std::string>(&large_arg)->default_value("bear.off+loop1"),
      "comma-separated meshes of the large section")
-    ("no-large", "skip the large section")
+    ("no-large", "skip the large and the large irregular sections")
+    ("irregular", po::value<std::string>(&irregular_arg)->default_value(
+       "fandisk_large.off+loop1+jitter90,bunny00.off+loop1+decimate50+jitter90,diplodocus.off+loop1+jitter90,"
+       "armadillo.off+loop1+jitter90,bunny00.off+needles2,bear.off+loop2+decimate60+jitter90"),
+     "comma-separated meshes of the large irregular section (irregular_meshes.h)")
+    ("write-meshes", po::value<std::string>(&write_dir),
+     "write the meshes of the large and large irregular sections as OFF files into this directory (named by "
+     "their spec), and exit: the input of `dlf sphere` timed as a user runs it")
     ("refined", po::value<std::string>(&refined_arg)->default_value(
        "part.off+mid1,part.off+mid2,oblong.off+mid1,oblong-shuffled.off+mid1,cactus.off+mid1,dino.off+mid1,bull.off+mid1"),
      "comma-separated meshes of the refined section (not counted towards the goals; empty: none)")
     ("list", "print the meshes that would be run, and exit")
+    ("trace", "print every iteration: step, critical step, and the shape of the face that limits it")
     ("speed-mesh", po::value<std::string>(&speed_mesh)->default_value("bear.off+loop1"),
      "the large mesh whose whole call is held against the 10 s goal")
     ("json", po::value<std::string>(&json_out)->default_value("sphere_benchmark.json"), "JSON output")
@@ -291,6 +411,7 @@ int main(int argc, char** argv)
   po::variables_map vm;
   const int status = parse_options("sphere_benchmark", desc, argc, argv, vm);
   if(status >= 0) return status;
+  trace_iterations = vm.count("trace") > 0;
   const fs::path mesh_dir = mesh_directory("sphere_benchmark", data_dir);
   if(mesh_dir.empty()) return 1;
   const bool explicit_list = !meshes_arg.empty();
@@ -301,10 +422,28 @@ int main(int argc, char** argv)
     std::sort(specs.begin(), specs.end());
   }
   const std::vector<std::string> large_specs = vm.count("no-large") ? std::vector<std::string>() : split(large_arg);
+  const std::vector<std::string> irregular_specs = vm.count("no-large") ? std::vector<std::string>() : split(irregular_arg);
   const std::vector<std::string> refined_specs = split(refined_arg);
 
+  if(vm.count("write-meshes")) {
+    fs::create_directories(write_dir);
+    for(const std::vector<std::string>* list : { &large_specs, &irregular_specs })
+      for(const std::string& spec : *list) {
+        SM mesh;
+        std::string why;
+        if(!load_mesh(spec, mesh_dir, mesh, why)) { std::cerr << "sphere_benchmark: " << spec << ": " << why << "\n"; return 1; }
+        const fs::path out = fs::path(write_dir) / (spec + ".off");
+        if(!CGAL::IO::write_polygon_mesh(out.string(), mesh, CGAL::parameters::stream_precision(17))) {
+          std::cerr << "sphere_benchmark: cannot write " << out << "\n";
+          return 1;
+        }
+        std::cout << out.string() << " " << num_faces(mesh) << "\n";
+      }
+    return 0;
+  }
+
   if(vm.count("list")) {
-    for(const std::vector<std::string>* list : { &std::as_const(specs), &large_specs, &refined_specs })
+    for(const std::vector<std::string>* list : { &std::as_const(specs), &large_specs, &irregular_specs, &refined_specs })
       for(const std::string& spec : *list) {
         SM mesh;
         std::string why;
@@ -335,7 +474,7 @@ int main(int argc, char** argv)
 
   // Every mesh in this process, one after the other.
   // The face minimum only filters the default list: a mesh named on the command line is run.
-  auto run_section = [&](const std::vector<std::string>& list, bool report_skips, const char* key) {
+  auto run_section = [&](const std::vector<std::string>& list, bool report_skips, const char* key, bool irregular_goals = false) {
     // Load first, to run the meshes by increasing size.
     std::vector<std::pair<std::string, SM> > meshes;
     json skipped = json::array();
@@ -360,9 +499,16 @@ int main(int argc, char** argv)
       m["mesh"] = spec;
       m["V"] = num_vertices(mesh);
       m["F"] = num_faces(mesh);
+      {
+        std::vector<double> angle, area;
+        face_shapes(mesh, angle, area);
+        m["min_angle_degrees"] = *std::min_element(angle.begin(), angle.end());
+        const auto [lo, hi] = std::minmax_element(area.begin(), area.end());
+        m["area_decades"] = *lo > 0 ? std::log10(*hi / *lo) : HUGE_VAL;
+      }
       std::cerr << "== " << spec << " (V " << num_vertices(mesh) << ", F " << num_faces(mesh) << ") ... " << std::flush;
       m["run"] = run_sphere(mesh);
-      m["missed_goals"] = missed_goals(m["run"]);
+      m["missed_goals"] = irregular_goals ? missed_irregular_goals(m) : missed_goals(m["run"]);
       m["meets_goals"] = m["missed_goals"].empty();
       const json& r = m["run"];
       std::cerr << std::string(r["status"]) << "  " << fmt_time(r["seconds"]) << " s";
@@ -381,10 +527,12 @@ int main(int argc, char** argv)
   };
   const json rows = run_section(specs, explicit_list, "meshes");
   const json large = run_section(large_specs, true, "large");
+  const json irregular = run_section(irregular_specs, true, "irregular", true);
   const json refined = run_section(refined_specs, true, "refined");
 
   doc["meshes"] = rows;
   doc["large"] = large;
+  doc["irregular"] = irregular;
   doc["refined"] = refined;
   json speed;
   for(const json& m : large)
@@ -406,9 +554,16 @@ int main(int argc, char** argv)
   }
 
   // --- Markdown
-  std::size_t met = 0, total = 0;
+  std::size_t met = 0, total = 0, accepted = 0;
   for(const json* section : { &rows, &large })
-    for(const json& m : *section) { ++total; if(m["meets_goals"]) ++met; }
+    for(const json& m : *section) {
+      ++total;
+      if(m["meets_goals"]) ++met;
+      else if(mean_log_r_exception(m["mesh"])) {
+        const std::vector<std::string> missed = m["missed_goals"];
+        if(std::all_of(missed.begin(), missed.end(), [](const std::string& g) { return g == "mean|log r|" || g == "stop"; })) ++accepted;
+      }
+    }
   std::ostringstream md;
   md << "Generated by `" << std::string(doc["command"]) << "` in " << fmt(doc["total_seconds"], 0) << " s; "
      << "load average " << std::string(doc["loadavg_start"]) << " at the start, " << std::string(doc["loadavg_end"]) << " at the end. "
@@ -419,7 +574,10 @@ int main(int argc, char** argv)
         "`parameterize()` call (input checks included). *log r* is log(area on the sphere / target area) per face; "
         "*inverted* counts the faces with `CGAL::orientation(ORIGIN, p, q, r)` not positive on the output points. "
         "Goals: status ok, 0 inverted, final D_area <= " << goal_d_area << ", mean |log r| <= " << goal_log_area_mean
-     << ", stopped by convergence. " << met << " of " << total << " rows meet them all.\n\n";
+     << ", stopped by convergence. " << met << " of " << total << " rows meet them all; " << accepted
+     << " more are accepted exceptions for the mean |log r| goal (coarse CAD meshes: part, oblong, oblong-shuffled, "
+        "cactus, dino, bull, whose own triangles hold it above 0.02 once D_area <= 2.01; doc/sphere.md, \"Coarse "
+        "connectivity\") and meet the others but the stop by convergence.\n\n";
   if(!rows.empty()) {
     md << "### Closed genus-0 meshes of CGAL's data set\n\n";
     table(md, rows);
@@ -431,6 +589,19 @@ int main(int argc, char** argv)
       md << "Speed goal (a 100K-face closed mesh in under " << goal_speed_seconds << " s): " << speed_mesh << ", "
          << std::size_t(speed["F"]) << " faces, " << fmt_time(speed["seconds"]) << " s (CPU " << fmt_time(speed["cpu_seconds"]) << " s), "
          << (speed["under_goal"] ? "met" : "**not met**") << ".\n\n";
+  }
+  if(!irregular.empty()) {
+    std::size_t irregular_met = 0;
+    for(const json& m : irregular) if(m["meets_goals"]) ++irregular_met;
+    md << "### Large irregular meshes\n\n"
+       << "CGAL's closed meshes subdivided, then made irregular (benchmark/irregular_meshes.h): +jitterK moves every "
+          "vertex in its tangent plane by up to K% of its distance to the opposite edges, +decimateK collapses the "
+          "shortest edges down to K% of the faces, +needlesK splits a maximal matching of edges at K geometrically "
+          "spaced points into fans of needles. *min angle* and *area span* (log10 of the largest over the smallest "
+          "face area) are the input's. The opening ends at the first iteration with D_area < 2.05. Goals: status ok, "
+          "0 inverted, final D_area <= " << goal_d_area << ", at most " << goal_seconds_per_100k
+       << " s per 100K faces (whole call). " << irregular_met << " of " << irregular.size() << " rows meet them.\n\n";
+    irregular_table(md, irregular);
   }
   if(!refined.empty()) {
     std::size_t refined_met = 0;

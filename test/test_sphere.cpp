@@ -20,6 +20,9 @@
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/subdivision_method_3.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_sphere_3.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_certified_flow.h>
+
+#include "../benchmark/irregular_meshes.h"
 
 #include <algorithm>
 #include <array>
@@ -827,6 +830,55 @@ TEST(Sphere_data_set, EveryClosedGenus0Mesh)
   }
   EXPECT_EQ(meshes, 34u) << "the data set changed: the README's claim counts 34 meshes";
   EXPECT_GE(all_goals, 28u);
+}
+
+TEST(Sphere_map, IrregularMeshes)
+{
+  // A scanned-like triangulation (benchmark/irregular_meshes.h): edge
+  // collapses and tangential jitter give slivers (min angle 1.4°) and face
+  // areas spanning two decades. Certified, D_area <= 2.01.
+  struct Case { const char* name; std::vector<dlf_benchmark::Irregular_step> steps; };
+  for(const Case& c : { Case{ "bear_bis", { { "decimate", 20 }, { "jitter", 90 } } } }) {
+    SM sm = read_sphere_mesh(c.name);
+    dlf_benchmark::make_irregular(sm, c.steps);
+    ASSERT_TRUE(closed_genus_0(sm)) << c.name;
+    double min_angle = 180;
+    for(auto f : faces(sm)) {
+      const auto h = halfedge(f, sm);
+      const K::Point_3 P[3] = { sm.point(source(h, sm)), sm.point(target(h, sm)), sm.point(target(next(h, sm), sm)) };
+      for(int k = 0; k < 3; ++k) {
+        const K::Vector_3 a = P[(k + 1) % 3] - P[k], b = P[(k + 2) % 3] - P[k];
+        min_angle = (std::min)(min_angle, std::atan2(std::sqrt(CGAL::cross_product(a, b).squared_length()), a * b) * 180 / CGAL_PI);
+      }
+    }
+    EXPECT_LT(min_angle, 2.) << c.name << ": the generator no longer makes slivers";
+    check_sphere_map({ c.name, 2.01, false }, sm);
+  }
+}
+
+TEST(Sphere_flow, CappedStepsDoNotShrinkTheRegularization)
+{
+  // The polish's ε shrinks only after a full step; a step cut short by a
+  // face's critical root (no halvings) is no evidence that the model holds:
+  // ε grows, up to the ceiling (never lowered by it); two halvings: × 4.
+  D::Flow_step full, capped, tiny, halved, once;
+  full.lambda = 1;
+  capped.lambda = 0.3;
+  tiny.lambda = 1e-3;
+  halved.lambda = 0.5;
+  halved.halvings = 2;
+  once.lambda = 0.6;
+  once.halvings = 1;
+  const double ceiling = 1e-2;
+  EXPECT_DOUBLE_EQ(D::sphere_regularization(1e-2, full, ceiling), 2.5e-3);
+  EXPECT_DOUBLE_EQ(D::sphere_regularization(1e-3, capped, ceiling), 1e-3 / 0.3);
+  EXPECT_DOUBLE_EQ(D::sphere_regularization(1e-3, tiny, ceiling), 4e-3);
+  EXPECT_DOUBLE_EQ(D::sphere_regularization(5e-3, tiny, ceiling), 1e-2);
+  EXPECT_DOUBLE_EQ(D::sphere_regularization(1e-1, tiny, ceiling), 1e-1);
+  EXPECT_DOUBLE_EQ(D::sphere_regularization(1e-2, halved, ceiling), 4e-2);
+  EXPECT_DOUBLE_EQ(D::sphere_regularization(1e-3, once, ceiling), 1e-3);
+  EXPECT_DOUBLE_EQ(D::sphere_regularization(1e-8, full, ceiling), 1e-8);
+  EXPECT_DOUBLE_EQ(D::sphere_regularization(1e4, halved, ceiling), 1e4);
 }
 
 TEST(Sphere_map, TinyMeshes)

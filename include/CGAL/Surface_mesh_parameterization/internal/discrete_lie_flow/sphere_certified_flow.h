@@ -82,6 +82,13 @@ struct Sphere_flow_settings
   /// than `crawl_step` with D_area below `crawl_below`, polish.
   double crawl_step = 0.01;
   double crawl_below = 2.1;
+  /// Irregular meshes (slivers, needles, face areas spanning decades) crawl
+  /// from higher up: after `crawl_far_steps` accepted opening steps in a row
+  /// shorter than `crawl_step` with D_area below `crawl_far_below`, polish
+  /// too. (Long protrusions alternate short and long opening steps there:
+  /// three in a row are not yet a crawl.)
+  double crawl_far_below = 3;
+  std::size_t crawl_far_steps = 8;
   /// The polish's direction: Gauss–Newton (else the opening's Sobolev/L-BFGS one).
   bool polish_gauss_newton = true;
   /// Initial ε of the Levenberg–Marquardt regularisation, relative to tr(H)/tr(S).
@@ -90,7 +97,30 @@ struct Sphere_flow_settings
   std::size_t relaxation_sweeps = 10;
   /// Sweeps visit the corners of the faces with |log area ratio| above this (0: every vertex).
   double relaxation_threshold = 0;
+  /// Levenberg–Marquardt update from the accepted step's length, not only
+  /// its halvings (see `sphere_regularization()`).
+  bool capped_steps_regularize = true;
 };
+
+/// Levenberg–Marquardt update of the polish's ε after an accepted step of
+/// length λ: only a full step lets it shrink by 4; two halvings or more
+/// multiply it by 4 (as `updated_regularization()`); a step cut short below
+/// λ = 1/2 by the critical root of a face that the direction nearly
+/// inverts is a model not to be trusted as far as its full step, so ε grows
+/// by min(4, 1/λ), but not past `capped_ceiling` (the starting ε: growing to
+/// 1e4 there turned the refined part.off's converging polish into a plateau
+/// at mean |log r| 0.0215). (`updated_regularization()` looks at the
+/// halvings alone: a step capped at μ λ_crit without halvings shrank ε by 4
+/// every time, down to 1e-8, and the ever less regularised direction nearly
+/// inverted ever more faces: on irregular meshes the polish crawled at steps
+/// of 1e-4–1e-3 for hundreds of iterations; doc/sphere.md, "Irregular meshes".)
+inline double sphere_regularization(double eps, const Flow_step& step, double capped_ceiling)
+{
+  if(step.lambda >= 1 && step.halvings == 0) return (std::max)(eps / 4, 1e-8);
+  if(step.halvings >= 2) return (std::min)(eps * 4, 1e4);
+  if(step.lambda >= 0.5) return eps;
+  return (std::max)(eps, (std::min)(eps * (std::min)(4., 1 / step.lambda), capped_ceiling));
+}
 
 /// The certified spherical flow as a policy of `run_flow()` (flow_driver.h),
 /// from the positively oriented unit vectors `p` (moved in place; always
@@ -194,7 +224,7 @@ public:
 
   void commit(const Flow_step& step, Flow_outcome& out)
   {
-    if(m_newton) m_eps = updated_regularization(m_eps, step.halvings);
+    if(m_newton) m_eps = m_settings.capped_steps_regularize ? sphere_regularization(m_eps, step, m_settings.newton_regularization) : updated_regularization(m_eps, step.halvings);
     m_p_prev = m_p;
     m_g_prev = m_g;
     m_p.swap(m_trial);
@@ -212,7 +242,8 @@ public:
       m_rising = m_D > m_best_cone_D ? m_rising + 1 : 0;
       m_best_cone_D = (std::min)(m_best_cone_D, m_D);
       m_crawling = (m_D < m_settings.crawl_below && step.lambda < m_settings.crawl_step) ? m_crawling + 1 : 0;
-      if(m_rising >= 3 || m_crawling >= 3) m_force_polish = true;
+      m_crawling_far = (m_D < m_settings.crawl_far_below && step.lambda < m_settings.crawl_step) ? m_crawling_far + 1 : 0;
+      if(m_rising >= 3 || m_crawling >= 3 || m_crawling_far >= m_settings.crawl_far_steps) m_force_polish = true;
     }
     // In the polish the mean |log r| may still fall while E hardly moves: a
     // plateau is when neither moves.
@@ -422,7 +453,7 @@ private:
   std::vector<Vec3> m_g, m_d, m_trial;
   bool m_polish = false, m_force_polish = false, m_newton = false;
   double m_best_cone_D = infinite_step();
-  std::size_t m_rising = 0, m_crawling = 0;
+  std::size_t m_rising = 0, m_crawling = 0, m_crawling_far = 0;
   double m_E = 0, m_E_trial = 0, m_D = 0, m_slope = 0;
   double m_lambda_prev = infinite_step();
   std::vector<double> m_mean_history;
