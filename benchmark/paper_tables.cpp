@@ -37,6 +37,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -148,14 +149,17 @@ static void to_unit_disk(std::vector<D::Vec2>& uv, const std::vector<int>& borde
   for(D::Vec2& p : uv) p = {{ (p[0] - ox) / r, (p[1] - oy) / r }};
 }
 
-/// The vertex masses of the OT peer: the input area lumped at vertices
-/// (a third of each incident triangle), scaled to sum to π.
-static std::vector<double> lumped_masses(const Indexed& m)
+/// The vertex masses of the OT peer: the input area (times the face's
+/// density, when one is given) lumped at vertices (a third of each incident
+/// triangle), scaled to sum to π.
+static std::vector<double> lumped_masses(const Indexed& m, const std::vector<double>& density = std::vector<double>())
 {
   std::vector<double> nu(m.xyz.size(), 0.);
   double total = 0;
-  for(const D::Face& t : m.faces) {
-    const double a = D::triangle_area_3(m.xyz[std::size_t(t[0])], m.xyz[std::size_t(t[1])], m.xyz[std::size_t(t[2])]);
+  for(std::size_t f = 0; f < m.faces.size(); ++f) {
+    const D::Face& t = m.faces[f];
+    const double a = (density.empty() ? 1. : density[f]) *
+                     D::triangle_area_3(m.xyz[std::size_t(t[0])], m.xyz[std::size_t(t[1])], m.xyz[std::size_t(t[2])]);
     for(int k = 0; k < 3; ++k) nu[std::size_t(t[k])] += a / 3;
     total += a;
   }
@@ -210,12 +214,14 @@ struct Dlf_run
   std::vector<D::Vec2> uv;
 };
 
-static Dlf_run run_dlf(const SM& input, halfedge_descriptor bhd, SMP::Discrete_lie_flow_mode mode)
+static Dlf_run run_dlf(const SM& input, halfedge_descriptor bhd, SMP::Discrete_lie_flow_mode mode,
+                       const std::vector<double>& face_density = std::vector<double>())
 {
   SM m = input;
   UV_map uvmap = m.add_property_map<vertex_descriptor, K::Point_2>("v:uv", K::Point_2(0, 0)).first;
   SMP::Discrete_lie_flow_options opt;
   opt.mode = mode;
+  opt.face_density = face_density;
   Dlf_circle p(Dlf_circle::Initial_parameterizer(), opt);
   Dlf_run r;
   const Clock::time_point t0 = Clock::now();
@@ -227,6 +233,19 @@ static Dlf_run run_dlf(const SM& input, halfedge_descriptor bhd, SMP::Discrete_l
   r.iterations = p.report().iterations;
   if(r.ok) r.uv = uv_of(m, uvmap);
   return r;
+}
+
+/// The library's default initial map (Tutte on the circle) moved onto the
+/// unit disk: the start that DLF and the OT peer share.
+static bool unit_disk_start(const SM& mesh, halfedge_descriptor bhd, const std::vector<int>& border, std::vector<D::Vec2>& uv0)
+{
+  SM m0 = mesh;
+  UV_map uv0map = m0.add_property_map<vertex_descriptor, K::Point_2>("v:uv", K::Point_2(0, 0)).first;
+  Dlf_circle::Initial_parameterizer tutte;
+  if(SMP::parameterize(m0, tutte, bhd, uv0map) != SMP::OK) return false;
+  uv0 = uv_of(m0, uv0map);
+  to_unit_disk(uv0, border);
+  return true;
 }
 
 static json disk_case(const std::string& spec, const SM& mesh, double tolerance)
@@ -241,14 +260,10 @@ static json disk_case(const std::string& spec, const SM& mesh, double tolerance)
   for(halfedge_descriptor h : halfedges_around_face(bhd, mesh)) border.push_back(int(target(h, mesh).idx()));
 
   // The common start: the library's default initial map (Tutte on the circle).
-  SM m0 = mesh;
-  UV_map uv0map = m0.add_property_map<vertex_descriptor, K::Point_2>("v:uv", K::Point_2(0, 0)).first;
   Clock::time_point t0 = Clock::now();
-  Dlf_circle::Initial_parameterizer tutte;
-  if(SMP::parameterize(m0, tutte, bhd, uv0map) != SMP::OK) { j["error"] = "initial map failed"; return j; }
+  std::vector<D::Vec2> uv0;
+  if(!unit_disk_start(mesh, bhd, border, uv0)) { j["error"] = "initial map failed"; return j; }
   j["initial_seconds"] = seconds_since(t0);
-  std::vector<D::Vec2> uv0 = uv_of(m0, uv0map);
-  to_unit_disk(uv0, border);
   j["initial"] = metrics_json(SMP::discrete_lie_flow_distortion(idx.xyz, uv0, idx.faces));
 
   // Optimal transport from the start's points with the lumped areas.
@@ -277,6 +292,102 @@ static json disk_case(const std::string& spec, const SM& mesh, double tolerance)
       d["beltrami_histogram"] = beltrami_histogram(uv_ot, r.uv, idx.faces);
     }
     j[mode.first] = d;
+  }
+  return j;
+}
+
+// ---------------------------------------------------------------------------
+// Figs. 17-18, measure-controlled: a region scaled by a factor
+// ---------------------------------------------------------------------------
+
+/// The faces whose centroid lies in the ball around the vertices' centroid
+/// of radius `fraction` times the bounding-box diagonal (the region of
+/// benchmark/fig15_16.sh).
+static std::vector<bool> ball_region(const Indexed& m, double fraction)
+{
+  D::Vec3 c{{ 0, 0, 0 }}, lo = m.xyz[0], hi = m.xyz[0];
+  for(const D::Vec3& p : m.xyz)
+    for(std::size_t k = 0; k < 3; ++k) {
+      c[k] += p[k] / double(m.xyz.size());
+      lo[k] = (std::min)(lo[k], p[k]);
+      hi[k] = (std::max)(hi[k], p[k]);
+    }
+  const double r = fraction * std::sqrt(D::dot(D::sub(hi, lo), D::sub(hi, lo)));
+  std::vector<bool> in(m.faces.size());
+  for(std::size_t f = 0; f < m.faces.size(); ++f) {
+    double d2 = 0;
+    for(std::size_t k = 0; k < 3; ++k) {
+      double x = 0;
+      for(int i = 0; i < 3; ++i) x += m.xyz[std::size_t(m.faces[f][i])][k] / 3;
+      d2 += (x - c[k]) * (x - c[k]);
+    }
+    in[f] = d2 <= r * r;
+  }
+  return in;
+}
+
+/// The region's share of the map's total signed area.
+static double region_share(const std::vector<D::Vec2>& uv, const std::vector<D::Face>& faces, const std::vector<bool>& in)
+{
+  double region = 0, total = 0;
+  for(std::size_t f = 0; f < faces.size(); ++f) {
+    const double a = D::signed_area_2(uv[std::size_t(faces[f][0])], uv[std::size_t(faces[f][1])], uv[std::size_t(faces[f][2])]);
+    total += a;
+    if(in[f]) region += a;
+  }
+  return region / total;
+}
+
+/// The paper's Figs. 17-18 proper: a region scaled by each factor, mapped by
+/// DLF (both modes, the density on the region) and by the OT peer (the
+/// density in its source masses), from the same start; the regions' shares
+/// and the Beltrami coefficients of ψ = φ_DLF ∘ φ_OT⁻¹.
+static json measure_case(const std::string& spec, const SM& mesh, const std::vector<double>& factors, double tolerance)
+{
+  json j;
+  j["mesh"] = spec;
+  j["faces"] = num_faces(mesh);
+  const Indexed idx = indexed(mesh);
+  const halfedge_descriptor bhd = PMP::longest_border(mesh).first;
+  std::vector<int> border;
+  for(halfedge_descriptor h : halfedges_around_face(bhd, mesh)) border.push_back(int(target(h, mesh).idx()));
+  std::vector<D::Vec2> uv0;
+  if(!unit_disk_start(mesh, bhd, border, uv0)) { j["error"] = "initial map failed"; return j; }
+  const std::vector<bool> region = ball_region(idx, 0.15);
+  j["region_faces"] = std::count(region.begin(), region.end(), true);
+  j["rows"] = json::array();
+  for(double factor : factors) {
+    std::vector<double> rho(idx.faces.size(), 1.);
+    double in = 0, all = 0;
+    for(std::size_t f = 0; f < rho.size(); ++f) {
+      if(region[f]) rho[f] = factor;
+      const D::Face& t = idx.faces[f];
+      const double a = rho[f] * D::triangle_area_3(idx.xyz[std::size_t(t[0])], idx.xyz[std::size_t(t[1])], idx.xyz[std::size_t(t[2])]);
+      all += a;
+      if(region[f]) in += a;
+    }
+    json row = { { "factor", factor }, { "prescribed_share", in / all } };
+    const ot::Result R = ot::solve(std::vector<ot::P>(uv0.begin(), uv0.end()), lumped_masses(idx, rho), tolerance);
+    if(R.centroid.size() != uv0.size()) { row["error"] = "optimal transport: " + R.message; j["rows"].push_back(row); continue; }
+    const std::vector<D::Vec2> uv_ot(R.centroid.begin(), R.centroid.end());
+    row["ot"] = { { "converged", R.converged }, { "newton_iterations", R.newton_iterations },
+                  { "gradient_relative", R.gradient_relative }, { "share", region_share(uv_ot, idx.faces, region) },
+                  { "folds", SMP::discrete_lie_flow_distortion(idx.xyz, uv_ot, idx.faces).inverted_faces } };
+    for(const auto& mode : { std::make_pair("dlf", SMP::Discrete_lie_flow_mode::CERTIFIED),
+                             std::make_pair("dlf_paper", SMP::Discrete_lie_flow_mode::PAPER) }) {
+      Dlf_run r = run_dlf(mesh, bhd, mode.second, rho);
+      json d = { { "status", r.status }, { "iterations", r.iterations } };
+      if(r.ok) {
+        to_unit_disk(r.uv, border);
+        const SMP::Discrete_lie_flow_distortion m = SMP::discrete_lie_flow_distortion(idx.xyz, r.uv, idx.faces);
+        d["share"] = region_share(r.uv, idx.faces, region);
+        d["folds"] = m.inverted_faces + m.degenerate_faces;
+        d["against_ot"] = difference_json(SMP::discrete_lie_flow_map_difference(idx.xyz, uv_ot, r.uv, idx.faces));
+        d["beltrami_histogram"] = beltrami_histogram(uv_ot, r.uv, idx.faces);
+      }
+      row[mode.first] = d;
+    }
+    j["rows"].push_back(row);
   }
   return j;
 }
@@ -486,6 +597,44 @@ static void write_markdown(std::ostream& md, const json& doc)
     }
   }
 
+  md << "\n### Figs. 17-18, measure-controlled: a region scaled by a factor, DLF against OT\n\n"
+     << "The region: the faces whose centroid lies within 0.15 × the bounding-box diagonal of the vertices' centroid "
+        "(as in `benchmark/fig15_16.sh`), its density multiplied by the factor; DLF takes the density as its targets, "
+        "the OT peer in its source masses. Shares are of the map's total area; the OT share is that of the centroid "
+        "triangles. |μ| of ψ = φ_DLF ∘ φ_OT⁻¹ per face.\n\n"
+     << "| mesh | factor | DLF mode | prescribed share | OT share | DLF share | DLF status (iterations) | OT Newton | DLF folds | OT folds | mean \\|μ\\| | area-weighted | max |";
+  for(std::size_t k = 0; k < mu_bins.size(); ++k)
+    md << " " << (k + 1 < mu_bins.size() ? "[" + fmt(mu_bins[k], 2) + ", " + fmt(mu_bins[k + 1], 2) + ")" : "≥ 1") << " |";
+  md << " not compared |\n|---|---:|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|";
+  for(std::size_t k = 0; k <= mu_bins.size(); ++k) md << "---:|";
+  md << "\n";
+  for(const json& c : doc["measure"]) {
+    if(c.contains("error")) { md << "| " << c["mesh"].get<std::string>() << " | " << c["error"].get<std::string>() << " |\n"; continue; }
+    const double F = c["faces"].get<double>();
+    for(const json& row : c["rows"]) {
+      if(row.contains("error")) {
+        md << "| " << c["mesh"].get<std::string>() << " | " << fmt(row["factor"].get<double>(), 2) << " | " << row["error"].get<std::string>() << " |\n";
+        continue;
+      }
+      const json& o = row["ot"];
+      for(const char* mode : { "dlf", "dlf_paper" }) {
+        const json& r = row[mode];
+        md << "| " << c["mesh"].get<std::string>() << " | " << fmt(row["factor"].get<double>(), 2) << " | "
+           << (std::string(mode) == "dlf" ? "default" : "paper") << " | " << fmt(row["prescribed_share"].get<double>(), 4) << " | "
+           << fmt(o["share"].get<double>(), 4) << " | " << (r.contains("share") ? fmt(r["share"].get<double>(), 4) : "—") << " | "
+           << r["status"].get<std::string>() << " (" << r["iterations"] << ") | " << o["newton_iterations"]
+           << (o["converged"].get<bool>() ? "" : " (not converged)") << " | "
+           << (r.contains("folds") ? std::to_string(r["folds"].get<std::size_t>()) : "—") << " | " << o["folds"] << " |";
+        if(!r.contains("against_ot")) { md << "\n"; continue; }
+        const json& a = r["against_ot"];
+        md << " " << fmt(a["beltrami_mean"].get<double>(), 4) << " | " << fmt(a["beltrami_weighted_mean"].get<double>(), 4) << " | "
+           << fmt(a["beltrami_max"].get<double>(), 3) << " |";
+        for(const json& n : r["beltrami_histogram"]) md << " " << fmt(100 * n.get<double>() / F, 1) << "% |";
+        md << "\n";
+      }
+    }
+  }
+
   md << "\n### Table 5: the spherical DLF on CGAL's closed genus-0 meshes\n\n"
      << "| mesh | faces | vertices | mode | status (iterations) | time s | Area_total | D_area | start Area_total | start D_area | folds |\n"
      << "|---|---:|---:|---|---|---:|---:|---:|---:|---:|---:|\n";
@@ -507,7 +656,7 @@ static void write_markdown(std::ostream& md, const json& doc)
 
 int main(int argc, char** argv)
 {
-  std::string data_dir, disk_arg, sphere_arg, json_out, md_out;
+  std::string data_dir, disk_arg, sphere_arg, measure_arg, factors_arg, json_out, md_out;
   double tolerance = 1e-8;
   po::options_description desc(
     "paper_tables: the paper's Tables 3-6 and Figs. 17-18 on CGAL's data set: DLF against a semi-discrete "
@@ -521,6 +670,9 @@ int main(int argc, char** argv)
        "lion-head.off,mannequin-devil.off,lion-head.off+loop1"), "disk meshes (NAME+loopK: K Loop subdivisions)")
     ("sphere-meshes", po::value<std::string>(&sphere_arg)->default_value(
        "armadillo.off,bear.off,bunny00.off,cow.off,homer.off,fandisk.off,camel.off,triceratops.off"), "closed genus-0 meshes")
+    ("measure-meshes", po::value<std::string>(&measure_arg)->default_value("nefertiti.off,mushroom.off,lion-head.off"),
+     "disk meshes of the measure-controlled Figs. 17-18 (a region scaled by each factor)")
+    ("factors", po::value<std::string>(&factors_arg)->default_value("0.5,1,2,4"), "the region's density factors (Figs. 17-18)")
     ("ot-tolerance", po::value<double>(&tolerance)->default_value(tolerance), "OT stop: ‖|W(h)| − ν‖₂ ≤ tolerance · ‖ν‖₂")
     ("check", "check the OT solver (Hessian, converged areas) on random points and the disk meshes, then exit")
     ("json", po::value<std::string>(&json_out)->default_value("paper_tables.json"), "JSON output")
@@ -547,6 +699,21 @@ int main(int argc, char** argv)
   for(const auto& d : disks) {
     std::cerr << "disk " << d.first << "\n";
     doc["disk"].push_back(disk_case(d.first, d.second, tolerance));
+  }
+  std::vector<double> factors;
+  for(const std::string& f : split(factors_arg)) {
+    char* end = nullptr;
+    const double x = std::strtod(f.c_str(), &end);
+    if(f.empty() || *end != '\0' || !(x > 0) || !std::isfinite(x)) { std::cerr << "paper_tables: --factors: '" << f << "' is not a positive number\n"; return 2; }
+    factors.push_back(x);
+  }
+  doc["measure"] = json::array();
+  for(const std::string& spec : split(measure_arg)) {
+    SM mesh;
+    const std::string why = load(spec, dir, mesh, true);
+    std::cerr << "measure-controlled " << spec << "\n";
+    if(!why.empty()) { doc["measure"].push_back({ { "mesh", spec }, { "error", why } }); continue; }
+    doc["measure"].push_back(measure_case(spec, mesh, factors, tolerance));
   }
   doc["sphere"] = json::array();
   for(const std::string& spec : split(sphere_arg)) {

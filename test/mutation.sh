@@ -85,8 +85,10 @@ find "$SRC/test" -maxdepth 1 -name '*.cpp' | while read -r f; do
 done
 
 # -O1: a rebuild per mutation, so compile time matters more than run time.
+# Without the tool's sources, nothing that runs the tool: no Python module.
 cmake -S "$SRC" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG" \
-  -DDLF_DATA_DIR="$DATA_DIR" -DDLF_BUILD_BENCHMARK=OFF > "$SCRATCH/configure.log" 2>&1
+  -DDLF_DATA_DIR="$DATA_DIR" -DDLF_BUILD_BENCHMARK=OFF -DDLF_WITH_PYTHON=OFF > "$SCRATCH/configure.log" 2>&1 ||
+  { echo "mutation: the scratch tree does not configure:"; tail -n 20 "$SCRATCH/configure.log"; exit 1; }
 filter=$(IFS=:; echo "${TESTS[*]}")
 run_subset() { # run_subset LOG: the subset; prints the failed tests
   (cd "$BUILD/test" && OMP_THREAD_LIMIT=1 OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 \
