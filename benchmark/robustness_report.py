@@ -32,7 +32,7 @@ KIND_METHODS = {
     "api": ("dlf_api",),
 }
 COLUMNS = ("mesh", "config", "status", "d_area", "seconds", "error", "exit_code", "exit_signal", "stderr_tail",
-           "report", "checked_inverted", "checked_degenerate", "nonfinite", "rejected_by_exact_check", "violation")
+           "report", "checked_inverted", "checked_degenerate", "nonfinite", "rejected_by_exact_check", "violation", "map_d_area")
 
 
 def signal_name(number):
@@ -141,8 +141,9 @@ def main(argv=None):
         md.append(f"| {cl} | " + " | ".join(cells) + " |")
 
     md += ["", "### Per case", "",
-           "status (exit code for the CLI) · inverted+degenerate faces of the output (exact predicate) · d_area (optimum "
-           "2; from the report for `dlf`, computed by the runner from the output for the library API and CGAL's) · "
+           "status (exit code for the CLI) · inverted+degenerate faces of the output (exact predicate) · d_area of the "
+           "output (optimum 2; computed from the written map alike for all planar methods, by `dlf-study "
+           "--check-outputs` for `dlf disk` and by the runner for the others; from the report for the sphere) · "
            "seconds of the whole process. `skipped`: CGAL cannot load the file as a mesh with a border.", "",
            "| class | case | kind | method | status | inv | d_area | s | message |", "|---|---|---|---|---|---|---|---|---|"]
     for r in runs:
@@ -153,7 +154,8 @@ def main(argv=None):
         inv = ""
         if r["checked_inverted"] is not None:
             inv = str(r["checked_inverted"] + (r["checked_degenerate"] or 0))
-        d = f"{r['d_area']:.4f}" if r["d_area"] is not None and r["status"] in ("ok", "not_converged") else ""
+        d_area = r["map_d_area"] if r["method"] in ("dlf_disk", "dlf_disk_paper") else r["d_area"]
+        d = f"{d_area:.4f}" if d_area is not None and r["status"] in ("ok", "not_converged") else ""
         s = f"{r['seconds']:.3f}" if r["seconds"] is not None else ""
         md.append(f"| {c['class']} | {c['case']} | {c['kind']} | {r['method']} | {st} | {inv} | {d} | {s} | "
                   f"{message(r, c['file'].split('/')[-1])} |")

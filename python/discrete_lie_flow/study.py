@@ -98,6 +98,7 @@ CREATE TABLE IF NOT EXISTS runs (
   exit_mismatch  INTEGER,           -- 1: the exit code disagrees with the report's status
   rejected_by_exact_check INTEGER,  -- the report's trial steps refused by the exact predicate alone
   violation      TEXT,              -- a broken promise, when checked (--check-outputs, runners): see VIOLATIONS
+  map_d_area     REAL,              -- --check-outputs, disk maps: d_area of the written uv against the 3D triangles
   PRIMARY KEY (mesh, config)
 )
 """
@@ -107,7 +108,7 @@ CREATE TABLE IF NOT EXISTS runs (
 ADDED_COLUMNS = (
     ("checked_inverted", "INTEGER"), ("checked_degenerate", "INTEGER"), ("nonfinite", "INTEGER"),
     ("stray_output", "INTEGER"), ("exit_mismatch", "INTEGER"), ("rejected_by_exact_check", "INTEGER"),
-    ("violation", "TEXT"),
+    ("violation", "TEXT"), ("map_d_area", "REAL"),
 )
 
 
@@ -277,6 +278,8 @@ def check_map(path: str, sphere: bool) -> Dict[str, int]:
     if any(not math.isfinite(x) for p in points for x in p):
         return {"nonfinite": 1, "checked_inverted": None, "checked_degenerate": None}
     neg = zero = 0
+    if not sphere:
+        result = {"map_d_area": _map_d_area(v, vt, faces)}
     for corners in faces:
         if sphere:
             o = orient3d_origin(*(v[i] for i, _ in corners))
@@ -286,7 +289,32 @@ def check_map(path: str, sphere: bool) -> Dict[str, int]:
             o = orient2d(*(vt[t] for _, t in corners))
         neg += o < 0
         zero += o == 0
-    return {"nonfinite": 0, "checked_inverted": neg, "checked_degenerate": zero}
+    result = {} if sphere else result
+    result.update(nonfinite=0, checked_inverted=neg, checked_degenerate=zero)
+    return result
+
+
+def _map_d_area(v, vt, faces) -> Optional[float]:
+    """d_area (doc/design.md, "Metrics") of a uv map against its 3D
+    triangles, without a density: sum of w_t (r_t + 1/r_t), r_t the face's
+    share of the map's area over its share of the surface's; None when a
+    face has no positive area in doubles."""
+    a2, a3 = [], []
+    for corners in faces:
+        (p, q, r), (s, t, u) = ([v[i] for i, _ in corners], [vt[j] for _, j in corners])
+        a2.append(0.5 * ((t[0] - s[0]) * (u[1] - s[1]) - (t[1] - s[1]) * (u[0] - s[0])))
+        e1 = [q[k] - p[k] for k in range(3)]
+        e2 = [r[k] - p[k] for k in range(3)]
+        n = (e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0])
+        a3.append(0.5 * math.sqrt(n[0] ** 2 + n[1] ** 2 + n[2] ** 2))
+    s2, s3 = sum(a2), sum(a3)
+    if not (s2 > 0 and s3 > 0) or min(a2) <= 0 or min(a3) <= 0:
+        return None
+    d = 0.0
+    for x, y in zip(a2, a3):
+        ratio = (x / s2) / (y / s3)
+        d += (y / s3) * (ratio + 1 / ratio)
+    return d if math.isfinite(d) else None
 
 
 # What counts as a violation: a crash or hang of the tool or runner, an
@@ -466,7 +494,7 @@ COLUMNS = (
     "mesh", "config", "status", "stop_reason", "d_area", "inverted_faces", "seconds", "vertices", "faces",
     "iterations", "fits", "error", "exit_code", "exit_signal", "stderr_tail", "report", "command", "worker",
     "finished_at", "checked_inverted", "checked_degenerate", "nonfinite", "stray_output", "exit_mismatch",
-    "rejected_by_exact_check", "violation",
+    "rejected_by_exact_check", "violation", "map_d_area",
 )
 
 

@@ -16,6 +16,7 @@ import sqlite3
 import subprocess
 import sys
 import time
+from pathlib import Path
 
 import psutil
 import pytest
@@ -427,9 +428,65 @@ def test_check_outputs(checked_corpus, tmp_path):
         assert rows[("fold.off", config)]["violation"] == "inverted/degenerate faces in an ok result"
         assert rows[("stray.off", config)]["violation"] == "output file left by a failed run"
         assert rows[("lie.off", config)]["violation"] == "exit code disagrees with report status"
+    # The study's d_area of the written map is the report's (the certified mode's map is the caller's mesh).
+    r = rows[("nefertiti.off", "disk-certified")]
+    assert abs(r["map_d_area"] - r["d_area"]) < 1e-9 * r["d_area"], r
+    assert rows[("nefertiti.off", "disk-paper")]["map_d_area"] >= 2
     # One face of each checked map swapped: one fold (the paper mode's check is of its flowing mesh).
     assert rows[("fold.off", "disk-certified")]["checked_inverted"] == 1
     assert rows[("fold.off", "disk-paper")]["checked_inverted"] == 1
     r = rows[("sphere.off", "sphere")]
     assert r["status"] in ("ok", "not_converged") and r["checked_inverted"] == 0 and r["violation"] is None, r
     assert rows[("nefertiti.off", "sphere")]["status"] == "not_applicable"
+
+
+ROBUSTNESS_CORPUS = os.environ.get("DLF_ROBUSTNESS_CORPUS")  # set by CTest when the benchmarks are built
+
+
+@pytest.mark.skipif(not ROBUSTNESS_CORPUS, reason="robustness_corpus not built (-DDLF_BUILD_BENCHMARK=ON)")
+def test_robustness_study_slice(tmp_path):
+    """Two classes of the robustness corpus (tiny: 4 disk and 1 sphere case;
+    folded_initial_map: 6 library-API cases) through dlf-study with the real
+    runner, as benchmark/robustness.sh runs them, and its tables."""
+    corpus = tmp_path / "corpus"
+    cases = []
+    for only in ("tiny", "folded_initial_map"):
+        part = tmp_path / only
+        subprocess.run([ROBUSTNESS_CORPUS, "--data", MESHES, "--only", only, "--corpus-only", str(part)], check=True,
+                       capture_output=True, timeout=120)
+        shutil.copytree(part, corpus, dirs_exist_ok=True)
+        cases += json.loads((part / "cases.json").read_text())
+    (corpus / "cases.json").write_text(json.dumps(cases))
+    db = tmp_path / "study.sqlite"
+    configs = ("disk-certified@disk", "disk-paper@disk", "sphere@sphere", "dlf_api@api", "cgal_mvc@disk",
+               "cgal_arap@disk")
+    p = subprocess.run([sys.executable, "-m", "discrete_lie_flow.study", "run", str(corpus), "--db", str(db),
+                        "--workers", "2", "--timeout", "60", "--memory-limit", "4", "--dlf", DLF,
+                        "--runner", ROBUSTNESS_CORPUS, "--every-config", "--check-outputs", "-q",
+                        *[a for c in configs for a in ("--config", c)]], capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0, p.stderr
+    rows = rows_of(db)
+    assert len(rows) == 4 * 4 + 1 + 6
+    api = {k[0].split("__")[1]: r for k, r in rows.items() if k[1] == "dlf_api"}
+    for name in ("nefertiti_mirrored.off", "nefertiti_identity_tutte.off"):
+        r = api[name]
+        assert r["status"] == "ok" and r["checked_inverted"] == 0 and r["checked_degenerate"] == 0, r
+        assert 2 <= r["d_area"] < 2.01 and r["violation"] is None
+    for name in ("nefertiti_vertex_reflected.off", "nefertiti_two_vertices_coincide.off",
+                 "nefertiti_all_collapsed.off", "nefertiti_nan_uv.off"):
+        r = api[name]
+        assert r["status"] == "flow_error" and r["error"] == "ERROR_INITIAL_MAP_FOLDED" and r["violation"] is None, r
+    r = rows[("disk/tiny__one_flat_triangle.off", "disk-certified")]
+    assert r["error"] == "ERROR_DEGENERATE_INPUT" and r["violation"] is None
+    r = rows[("disk/tiny__two_triangles.off", "cgal_mvc")]
+    assert r["status"] == "ok" and r["checked_inverted"] == 0 and r["violation"] is None
+    assert all(r["violation"] is None for k, r in rows.items() if not k[1].startswith("cgal"))
+    report = Path(__file__).resolve().parents[2] / "benchmark" / "robustness_report.py"
+    out = tmp_path / "table.md"
+    p = subprocess.run([sys.executable, str(report), str(db), str(corpus / "cases.json"), "--markdown", str(out)],
+                       capture_output=True, text=True, timeout=60)
+    # CGAL's iterative authalic is not in this study: its 4 rows are missing (exit 1); no DLF violation.
+    assert p.returncode == 1 and "DLF violations 0" in p.stdout and "missing 4" in p.stdout, p.stdout + p.stderr
+    table = out.read_text()
+    assert "| folded_initial_map |  |  |  | 2/6, ERROR_INITIAL_MAP_FOLDED |" in table
+    assert "| tiny | nefertiti" not in table and "| tiny | one_quad | disk | dlf_disk | cli_error (1) |" in table
