@@ -118,10 +118,14 @@ ADDED_COLUMNS = (
 
 
 def _limit_memory(nbytes: int):
-    def apply():  # in the child, before exec
-        import resource
+    # Imported here, in the parent: the child (forked from a threaded
+    # worker) must not take the import lock before it execs.
+    import resource
 
-        resource.setrlimit(resource.RLIMIT_AS, (nbytes, nbytes))
+    setrlimit, which = resource.setrlimit, resource.RLIMIT_AS
+
+    def apply():  # in the child, before exec
+        setrlimit(which, (nbytes, nbytes))
 
     return apply
 

@@ -490,3 +490,12 @@ def test_robustness_study_slice(tmp_path):
     table = out.read_text()
     assert "| folded_initial_map |  |  |  | 2/6, ERROR_INITIAL_MAP_FOLDED |" in table
     assert "| tiny | nefertiti" not in table and "| tiny | one_quad | disk | dlf_disk | cli_error (1) |" in table
+
+
+def test_memory_limit(tmp_path):
+    """--memory-limit caps each run's address space: 6 GiB cannot be had
+    under a 4 GiB limit, 100 MiB can."""
+    code, sig, err, _, timed_out = study._run_tool([sys.executable, "-c", "bytearray(6 << 30)"], 60, str(tmp_path), 4)
+    assert code == 1 and sig is None and not timed_out and "MemoryError" in err
+    code, _, err, _, _ = study._run_tool([sys.executable, "-c", "bytearray(100 << 20)"], 60, str(tmp_path), 4)
+    assert code == 0, err
