@@ -251,10 +251,11 @@ def read_obj_map(path: str):
             w = line.split()
             if not w:
                 continue
-            if w[0] == "v":
-                v.append(tuple(float(x) for x in w[1:4]))
-            elif w[0] == "vt":
-                vt.append(tuple(float(x) for x in w[1:3]))
+            if w[0] in ("v", "vt"):
+                n = 3 if w[0] == "v" else 2
+                if len(w) < n + 1:
+                    raise ValueError(f"{path}: a short line: {line.strip()}")
+                (v if n == 3 else vt).append(tuple(float(x) for x in w[1:n + 1]))
             elif w[0] == "f":
                 if len(w) != 4:
                     raise ValueError(f"{path}: a face that is not a triangle: {line.strip()}")
@@ -272,29 +273,29 @@ def read_obj_map(path: str):
     return v, vt, faces
 
 
-def check_map(path: str, sphere: bool) -> Dict[str, int]:
+def check_map(path: str, sphere: bool) -> Dict[str, Optional[float]]:
     """Checks a map the tool wrote: every value finite; every face positive
     by the exact predicate (the uv triangle of a disk map, or det[p, q, r]
     of the sphere points). Returns nonfinite, checked_inverted (faces that
-    are negative) and checked_degenerate (faces of orientation zero)."""
+    are negative), checked_degenerate (faces of orientation zero) and, for a
+    disk map, map_d_area."""
     v, vt, faces = read_obj_map(path)
     points = v if sphere else vt
     if any(not math.isfinite(x) for p in points for x in p):
         return {"nonfinite": 1, "checked_inverted": None, "checked_degenerate": None}
+    if not sphere and any(t is None for corners in faces for _, t in corners):
+        raise ValueError(f"{path}: a face without texture coordinates")
     neg = zero = 0
-    if not sphere:
-        result = {"map_d_area": _map_d_area(v, vt, faces)}
     for corners in faces:
         if sphere:
             o = orient3d_origin(*(v[i] for i, _ in corners))
         else:
-            if any(t is None for _, t in corners):
-                raise ValueError(f"{path}: a face without texture coordinates")
             o = orient2d(*(vt[t] for _, t in corners))
         neg += o < 0
         zero += o == 0
-    result = {} if sphere else result
-    result.update(nonfinite=0, checked_inverted=neg, checked_degenerate=zero)
+    result = {"nonfinite": 0, "checked_inverted": neg, "checked_degenerate": zero}
+    if not sphere:
+        result["map_d_area"] = _map_d_area(v, vt, faces)
     return result
 
 

@@ -263,7 +263,7 @@ printf '{"status": "%s", "message": "%s on %s", "inverted": %s, "degenerate": 0,
 
 def runner_command(corpus, db, runner, *extra):
     return [sys.executable, "-m", "discrete_lie_flow.study", "run", str(corpus), "--db", str(db), "--workers", "2",
-            "--timeout", "5", "--runner", runner, "--memory-limit", "4", "-q",
+            "--timeout", "3", "--runner", runner, "--memory-limit", "4", "-q",
             *[a for c in RUNNER_CONFIGS for a in ("--config", c)], *extra]
 
 
@@ -295,26 +295,10 @@ def check_runner_rows(rows):
 
 
 def test_runner_configurations(runner_corpus, tmp_path):
+    """Interrupted, resumed, run again: every row once, as it was first written."""
     corpus, runner = runner_corpus
     db = tmp_path / "study.sqlite"
-    p = subprocess.run(runner_command(corpus, db, runner), capture_output=True, text=True, timeout=300)
-    assert p.returncode == 0, p.stderr
-    check_runner_rows(rows_of(db))
-    again = [a for a in runner_command(corpus, db, runner) if a != "-q"]  # the progress line says what is left
-    p = subprocess.run(again, capture_output=True, text=True, timeout=300)
-    assert p.returncode == 0 and f"{len(RUNNER_KEYS)} already in" in p.stderr and "0 to run" in p.stderr, p.stderr
-    summary = study.summary_markdown(sqlite3.connect(db))
-    assert f"Violations among the checked runs ({len(RUNNER_KEYS)}): 12." in summary  # 6 kinds x 2
-    # A folder that holds no mesh is a mistake, not an empty study.
-    p = subprocess.run(runner_command(corpus, db, runner, "--config", "delta@sphere"), capture_output=True, text=True,
-                       timeout=120)
-    assert p.returncode == 1 and "delta@sphere: no mesh under that folder" in p.stderr
-
-
-def test_runner_study_resumes(runner_corpus, tmp_path):
-    corpus, runner = runner_corpus
-    db = tmp_path / "study.sqlite"
-    env = dict(os.environ, FAKE_DELAY="0.4")
+    env = dict(os.environ, FAKE_DELAY="0.3")
     p = subprocess.Popen(runner_command(corpus, db, runner), env=env, stdout=subprocess.DEVNULL,
                          stderr=subprocess.PIPE, text=True)
     deadline = time.time() + 120
@@ -331,6 +315,16 @@ def test_runner_study_resumes(runner_corpus, tmp_path):
     check_runner_rows(rows)
     for key, row in first.items():
         assert rows[key] == row
+    again = [a for a in runner_command(corpus, db, runner) if a != "-q"]  # the progress line says what is left
+    p = subprocess.run(again, capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0 and f"{len(RUNNER_KEYS)} already in" in p.stderr and "0 to run" in p.stderr, p.stderr
+    assert rows_of(db) == rows
+    summary = study.summary_markdown(sqlite3.connect(db))
+    assert f"Violations among the checked runs ({len(RUNNER_KEYS)}): 12." in summary  # 6 kinds x 2
+    # A folder that holds no mesh is a mistake, not an empty study.
+    p = subprocess.run(runner_command(corpus, db, runner, "--config", "delta@sphere"), capture_output=True, text=True,
+                       timeout=120)
+    assert p.returncode == 1 and "delta@sphere: no mesh under that folder" in p.stderr
 
 
 def test_exact_orientation_filters():
@@ -365,7 +359,8 @@ def test_exact_orientation_filters():
 def checked_corpus(tmp_path_factory):
     """nefertiti and sphere.off as they are, and copies on which a wrapper of
     dlf breaks a promise: a folded face in an ok map (fold), a map left by
-    a failed run (stray), exit 0 with a report that says otherwise (lie)."""
+    a failed run (stray), exit 0 with a report that says otherwise (lie), a
+    face with an index out of range (garble)."""
     root = tmp_path_factory.mktemp("checked")
     corpus = root / "corpus"
     corpus.mkdir()
@@ -374,7 +369,7 @@ def checked_corpus(tmp_path_factory):
         if not os.path.exists(src):
             pytest.skip(f"{src} missing (CGAL's data set)")
         shutil.copy(src, corpus / name)
-    for name in ("fold", "stray", "lie"):
+    for name in ("fold", "stray", "lie", "garble"):
         shutil.copy(corpus / "nefertiti.off", corpus / f"{name}.off")
     fake = root / "fake-dlf"
     edit = root / "edit.py"
@@ -404,6 +399,7 @@ case "$2" in
   *fold.off) for m in $out $dom; do "{sys.executable}" "{edit}" fold "$m"; done ;;
   *stray.off) echo "dlf: error: made up" >&2; exit 1 ;;
   *lie.off) "{sys.executable}" "{edit}" report "$rep"; exit 0 ;;
+  *garble.off) for m in $out $dom; do echo "f 1/1 2/2 999999/999999" >> "$m"; done ;;
 esac
 exit $code
 """)
@@ -428,6 +424,7 @@ def test_check_outputs(checked_corpus, tmp_path):
         assert rows[("fold.off", config)]["violation"] == "inverted/degenerate faces in an ok result"
         assert rows[("stray.off", config)]["violation"] == "output file left by a failed run"
         assert rows[("lie.off", config)]["violation"] == "exit code disagrees with report status"
+        assert rows[("garble.off", config)]["violation"] == "unreadable output"
     # The study's d_area of the written map is the report's (the certified mode's map is the caller's mesh).
     r = rows[("nefertiti.off", "disk-certified")]
     assert abs(r["map_d_area"] - r["d_area"]) < 1e-9 * r["d_area"], r
