@@ -1,23 +1,24 @@
 // Copyright (c) 2026 The Discrete Lie Flow authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Robustness study: a deterministic corpus of hostile inputs derived
-// from CGAL's data set and from generated meshes, run through `dlf disk`,
-// `dlf sphere` (subprocesses with a timeout and a memory limit), CGAL's
-// iterative authalic, ARAP and mean-value parameterizers and the DLF library
-// API with folding initial maps (in forked children, so that a crash or hang
-// of one method is recorded instead of ending the study).
+// The robustness study's corpus and its in-process runner.
 //
-//   robustness_corpus --dlf build/examples/dlf --data build/data/meshes \
-//       --scratch /tmp/dlf_robustness --json results.json --markdown table.md
+// A deterministic corpus of hostile inputs derived from CGAL's data set and
+// from generated meshes:
 //
-// Every case is written as an OFF file in <scratch>/corpus/ (kept, so a
-// failure can be replayed by hand). Per case x method it records: status
-// (ok, an error name, crash(SIGNAL), hang), the error message, faces whose
-// orientation (exact CGAL::orientation on the output doubles) differs from
-// the majority or is zero, non-finite output values, d_area of the output
-// (computed here the same way for every method), time, and a stray output
-// file left by a failed CLI run.
+//   robustness_corpus --corpus-only DIR      # DIR/{disk,sphere,api}/*.off, DIR/cases.json
+//
+// and one run of the library API (Discrete_lie_flow_parameterizer_3 with an
+// initial map spoiled on purpose) or of CGAL's iterative authalic, ARAP or
+// mean-value parameterizer on one case, in this process, with the checks of
+// its output (faces against the majority orientation or flat, by the exact
+// CGAL::orientation on the output doubles; non-finite values; d_area of the
+// output), as a JSON report:
+//
+//   robustness_corpus --run cgal_arap --case DIR/disk/cap__grid8_eps1e-14.off --report out.json
+//
+// benchmark/robustness.sh runs every case through dlf-study, which gives each
+// run its own process, timeout and memory limit (doc/robustness.md).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
@@ -38,15 +39,8 @@
 #include <boost/program_options.hpp>
 #include <nlohmann/json.hpp>
 
-#include <fcntl.h>
-#include <signal.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -420,88 +414,6 @@ std::vector<Case> make_corpus(const std::string& data)
   return C;
 }
 
-// ---------------------------------------------------------------- processes
-struct Proc { int code = -1; int sig = 0; bool timeout = false; double seconds = 0; };
-
-void limit_child()
-{
-  struct rlimit r;
-  r.rlim_cur = r.rlim_max = rlim_t(4) << 30; // 4 GiB of address space
-  setrlimit(RLIMIT_AS, &r);
-}
-
-// Waits for pid for at most `timeout` seconds; kills it (SIGKILL) after that.
-Proc wait_for(pid_t pid, double timeout, std::chrono::steady_clock::time_point t0)
-{
-  Proc p;
-  int st = 0;
-  for(;;) {
-    const pid_t r = waitpid(pid, &st, WNOHANG);
-    if(r == pid) break;
-    if(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > timeout) {
-      kill(pid, SIGKILL);
-      waitpid(pid, &st, 0);
-      p.timeout = true;
-      break;
-    }
-    usleep(2000);
-  }
-  p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if(WIFEXITED(st)) p.code = WEXITSTATUS(st);
-  if(WIFSIGNALED(st)) p.sig = WTERMSIG(st);
-  return p;
-}
-
-Proc run_command(const std::vector<std::string>& argv, double timeout, const std::string& err_file)
-{
-  const auto t0 = std::chrono::steady_clock::now();
-  const pid_t pid = fork();
-  if(pid == 0) {
-    limit_child();
-    const int dn = open("/dev/null", O_WRONLY);
-    const int ef = open(err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    dup2(dn, 1);
-    dup2(ef, 2);
-    std::vector<char*> a;
-    for(const std::string& s : argv) a.push_back(const_cast<char*>(s.c_str()));
-    a.push_back(nullptr);
-    execv(a[0], a.data());
-    _exit(127);
-  }
-  return wait_for(pid, timeout, t0);
-}
-
-// Runs f in a forked child (cwd = dir, stdout silenced); its JSON comes back through a file.
-json run_forked(const std::function<json()>& f, double timeout, const std::string& dir)
-{
-  const std::string out = dir + "/child_result.json";
-  fs::remove(out);
-  const auto t0 = std::chrono::steady_clock::now();
-  const pid_t pid = fork();
-  if(pid == 0) {
-    limit_child();
-    if(chdir(dir.c_str()) != 0) _exit(126);
-    const int dn = open("/dev/null", O_WRONLY);
-    dup2(dn, 1);
-    dup2(dn, 2);
-    json r;
-    try { r = f(); } catch(const std::exception& e) { r = { { "status", "exception" }, { "message", e.what() } }; }
-    catch(...) { r = { { "status", "exception" }, { "message", "unknown exception" } }; }
-    std::ofstream(out) << r.dump();
-    _exit(0);
-  }
-  const Proc p = wait_for(pid, timeout, t0);
-  json r;
-  if(p.timeout) r = { { "status", "hang" } };
-  else if(p.sig) r = { { "status", std::string("crash(") + strsignal(p.sig) + ")" } };
-  else {
-    std::ifstream in(out);
-    try { in >> r; } catch(...) { r = { { "status", "crash(no result)" } }; }
-  }
-  r["seconds"] = p.seconds;
-  return r;
-}
-
 // ---------------------------------------------------------------- measures
 struct Map_check { std::size_t inverted = 0, degenerate = 0; bool nonfinite = false; bool mirrored = false; double d_area = 0; };
 
@@ -537,113 +449,7 @@ Map_check check_planar(const std::vector<std::array<double, 2> >& uv, const std:
   return c;
 }
 
-Map_check check_sphere(const std::vector<P3>& p, const std::vector<std::array<int, 3> >& F)
-{
-  Map_check c;
-  for(const auto& x : p) for(double v : x) if(!std::isfinite(v)) c.nonfinite = true;
-  if(c.nonfinite) return c;
-  std::size_t pos = 0, neg = 0;
-  const EK::Point_3 O(0, 0, 0);
-  for(const auto& f : F) {
-    const P3 &a = p[std::size_t(f[0])], &b = p[std::size_t(f[1])], &d = p[std::size_t(f[2])];
-    const CGAL::Orientation o = CGAL::orientation(O, EK::Point_3(a[0], a[1], a[2]), EK::Point_3(b[0], b[1], b[2]), EK::Point_3(d[0], d[1], d[2]));
-    if(o == CGAL::POSITIVE) ++pos; else if(o == CGAL::NEGATIVE) ++neg; else ++c.degenerate;
-  }
-  c.mirrored = neg > pos;
-  c.inverted = std::min(pos, neg);
-  c.d_area = -1;
-  return c;
-}
-
-// Reads an OBJ written by dlf: v (xyz or sphere points), vt (uv), f a/a b/b c/c.
-bool read_obj(const std::string& path, std::vector<P3>& v, std::vector<std::array<double, 2> >& vt,
-              std::vector<std::array<int, 3> >& F)
-{
-  std::ifstream in(path);
-  if(!in) return false;
-  std::string line;
-  while(std::getline(in, line)) {
-    std::istringstream s(line);
-    std::string k;
-    s >> k;
-    auto rd = [&s]() { std::string t; s >> t; return std::strtod(t.c_str(), nullptr); };
-    if(k == "v") { P3 p; p[0] = rd(); p[1] = rd(); p[2] = rd(); v.push_back(p); }
-    else if(k == "vt") { std::array<double, 2> p; p[0] = rd(); p[1] = rd(); vt.push_back(p); }
-    else if(k == "f") {
-      std::array<int, 3> t;
-      for(int& i : t) { std::string w; s >> w; i = std::atoi(w.c_str()) - 1; }
-      F.push_back(t);
-    }
-  }
-  for(const auto& t : F) for(int i : t) if(i < 0 || std::size_t(i) >= v.size()) return false;
-  return true;
-}
-
 // ---------------------------------------------------------------- methods
-json run_dlf(const std::string& dlf, const Case& c, const std::string& file, const std::string& dir,
-             const std::string& mode, double timeout)
-{
-  const std::string out = dir + "/out.obj", rep = dir + "/report.json", err = dir + "/stderr.txt";
-  const std::string domain = dir + "/domain.obj";
-  fs::remove(out); fs::remove(rep); fs::remove(domain);
-  std::vector<std::string> argv = { dlf, c.kind == "sphere" ? "sphere" : "disk", file, "-o", out, "--report", rep };
-  // The paper mode certifies its flowing (flipped) triangulation and reports
-  // the caller's triangles that fold (doc/design.md): check the former.
-  const bool paper = c.kind == "disk" && mode == "paper";
-  if(paper) for(const char* a : { "--mode", "paper", "--domain-mesh" }) argv.push_back(a);
-  if(paper) argv.push_back(domain);
-  const Proc p = run_command(argv, timeout, err);
-  json r;
-  r["exit"] = p.code;
-  r["seconds"] = p.seconds;
-  std::string msg;
-  { std::ifstream e(err); std::getline(e, msg); }
-  if(p.timeout) r["status"] = "hang";
-  else if(p.sig) r["status"] = std::string("crash(") + strsignal(p.sig) + ")";
-  else {
-    json R;
-    bool have = false;
-    { std::ifstream in(rep); if(in) { try { in >> R; have = true; } catch(...) { r["bad_report"] = true; } } }
-    if(have) { r["status"] = R.value("status", "?"); if(R.contains("message")) msg = R["message"].get<std::string>(); }
-    else r["status"] = p.code == 0 ? "ok(no report)" : "cli_error";
-    if(have && R.contains("rejected_by_exact_check")) r["rejected_by_exact_check"] = R["rejected_by_exact_check"];
-    if(have && R.contains("iterations")) r["iterations"] = R["iterations"];
-    if(have && R.contains("stop_reason")) r["stop_reason"] = R["stop_reason"];
-    // Exit 0: "ok"; exit 3: "not_converged", a valid map written all the same.
-    const bool wrote = p.code == 0 || p.code == 3;
-    if(!wrote && fs::exists(out)) r["stray_output"] = true;
-    if((p.code == 0) != (r["status"] == "ok") || (p.code == 3) != (r["status"] == "not_converged"))
-      r["exit_status_mismatch"] = true;
-    if(wrote) {
-      std::vector<P3> v;
-      std::vector<std::array<double, 2> > vt;
-      std::vector<std::array<int, 3> > F;
-      if(!read_obj(out, v, vt, F)) r["unreadable_output"] = true;
-      else {
-        Map_check mc = c.kind == "sphere" ? check_sphere(v, F) : check_planar(vt, v, F);
-        if(paper) {
-          r["caller_folds"] = mc.inverted + mc.degenerate; // information, not a violation
-          std::vector<P3> dv;
-          std::vector<std::array<double, 2> > dvt;
-          std::vector<std::array<int, 3> > dF;
-          if(!read_obj(domain, dv, dvt, dF)) r["unreadable_output"] = true;
-          else mc = check_planar(dvt, dv, dF);
-        }
-        if(c.kind == "sphere") {
-          // the sphere contract is stricter: every face positive (det[p, q, r] > 0)
-          r["inverted"] = mc.mirrored ? F.size() - mc.inverted - mc.degenerate : mc.inverted;
-        } else r["inverted"] = mc.mirrored ? F.size() - mc.inverted - mc.degenerate : mc.inverted; // dlf promises positive uv
-        r["degenerate"] = mc.degenerate;
-        r["nonfinite"] = mc.nonfinite;
-        if(c.kind != "sphere" && mc.d_area > 0) r["d_area"] = mc.d_area;
-        if(c.kind == "sphere" && R.contains("final")) r["d_area"] = R["final"].value("d_area", -1.0);
-      }
-    }
-  }
-  r["message"] = msg;
-  return r;
-}
-
 bool load_cgal(const std::string& file, SM& sm, std::string& why)
 {
   std::vector<Point_3> pts;
@@ -772,7 +578,7 @@ struct Spoiled_tutte
   }
 };
 
-json run_api(const Case& c, const std::string& file)
+json run_api(int variant, const std::string& file)
 {
   SM sm;
   std::string why;
@@ -780,10 +586,10 @@ json run_api(const Case& c, const std::string& file)
   const halfedge_descriptor bhd = CGAL::Polygon_mesh_processing::longest_border(sm).first;
   SM::Property_map<vertex_descriptor, Point_2> uv = sm.add_property_map<vertex_descriptor, Point_2>("v:uv", Point_2(0, 0)).first;
   Spoiled_tutte init;
-  init.variant = c.api_variant;
+  init.variant = variant;
   SMP::Discrete_lie_flow_parameterizer_3<SM, Spoiled_tutte> dlf(init);
   // The rounding-level sliver only matters once the flow pushes it; run to the plateau.
-  if(c.api_variant == 6) dlf.options().tolerance = 0;
+  if(variant == 6) dlf.options().tolerance = 0;
   const SMP::Error_code e = SMP::parameterize(sm, dlf, bhd, uv);
   const SMP::Discrete_lie_flow_report& R = dlf.report();
   json r = { { "status", SMP::discrete_lie_flow_error_name(e) }, { "message", R.message },
@@ -807,18 +613,32 @@ json run_api(const Case& c, const std::string& file)
   return r;
 }
 
-bool is_violation(const json& r, std::string& what)
+// The initial-map variant of a library-API case, from the file that the
+// corpus writes beside it (<case>.json).
+int api_variant_of(const std::string& file)
 {
-  const std::string s = r.value("status", "");
-  if(s.rfind("crash", 0) == 0) { what = "crash"; return true; }
-  if(s == "hang") { what = "hang"; return true; }
-  if(s == "exception") { what = "exception escaped"; return true; }
-  if(r.value("nonfinite", false)) { what = "NaN/Inf in output"; return true; }
-  if((s == "ok" || s == "not_converged") && (r.value("inverted", 0) > 0 || r.value("degenerate", 0) > 0)) { what = "inverted/degenerate faces in an ok result"; return true; }
-  if(r.value("stray_output", false)) { what = "output file left by a failed run"; return true; }
-  if(r.value("exit_status_mismatch", false)) { what = "exit code disagrees with report status"; return true; }
-  if(r.value("unreadable_output", false)) { what = "unreadable output"; return true; }
-  return false;
+  const fs::path side = fs::path(file).replace_extension(".json");
+  std::ifstream in(side);
+  if(!in) throw std::runtime_error(side.string() + ": missing (the case's initial-map variant; write the corpus with --corpus-only)");
+  const json j = json::parse(in);
+  if(!j.contains("initial_map_variant") || !j["initial_map_variant"].is_number_integer())
+    throw std::runtime_error(side.string() + ": no integer initial_map_variant");
+  return j["initial_map_variant"].get<int>();
+}
+
+// Writes the report beside its final name, then renames it: a run killed
+// while writing leaves no report rather than half of one.
+bool write_report(const std::string& path, const json& r)
+{
+  const std::string tmp = path + ".part";
+  {
+    std::ofstream o(tmp);
+    o << r.dump(1) << "\n";
+    if(!o) return false;
+  }
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  return !ec;
 }
 
 } // namespace
@@ -826,159 +646,67 @@ bool is_violation(const json& r, std::string& what)
 int main(int argc, char** argv)
 {
   namespace po = boost::program_options;
-  std::string dlf, data, scratch, json_out, md_out, only, corpus_only;
-  double timeout;
-  bool no_cgal = false;
-  po::options_description desc("robustness_corpus: hostile-input study of dlf and CGAL's parameterizers");
+  std::string data, only, corpus_only, method, case_file, report;
+  po::options_description desc(
+    "robustness_corpus: the hostile-input corpus of the robustness study, and its runner for the library API and "
+    "CGAL's parameterizers (benchmark/robustness.sh runs both through dlf-study)");
   desc.add_options()("help,h", "help")
-    ("dlf", po::value(&dlf)->default_value("build/examples/dlf"), "the dlf binary")
     ("data", po::value(&data)->default_value(std::string(DLF_DATA_DIR) + "/meshes"), "CGAL data meshes")
-    ("scratch", po::value(&scratch)->default_value("/tmp/dlf_robustness"), "scratch folder (corpus and runs)")
-    ("json", po::value(&json_out)->default_value(""), "write all results as JSON")
-    ("markdown", po::value(&md_out)->default_value(""), "write the tables as Markdown")
-    ("timeout", po::value(&timeout)->default_value(60.0), "seconds per run")
-    ("only", po::value(&only)->default_value(""), "run only the classes whose name contains this")
-    ("no-cgal", po::bool_switch(&no_cgal), "skip CGAL's parameterizers")
+    ("only", po::value(&only)->default_value(""), "with --corpus-only: only the classes whose name contains this")
     ("corpus-only", po::value(&corpus_only)->value_name("DIR"),
-     "write the mesh cases (not the library-API ones) as DIR/disk/*.off and DIR/sphere/*.off, by the command "
-     "each is meant for, run nothing (for dlf-study, benchmark/robustness_study.sh)");
+     "write every case as DIR/KIND/CLASS__CASE.off, KIND the method family it is meant for (disk: dlf disk in both "
+     "modes and CGAL's parameterizers; sphere: dlf sphere; api: the library API, with its initial-map variant in "
+     "CLASS__CASE.json), and the cases in corpus order in DIR/cases.json; run nothing")
+    ("run", po::value(&method)->value_name("METHOD"),
+     "run one case in this process: dlf_api, cgal_iterative_authalic, cgal_arap or cgal_mvc")
+    ("case", po::value(&case_file)->value_name("FILE"), "with --run: the case's mesh file")
+    ("report", po::value(&report)->value_name("OUT.json"),
+     "with --run: the JSON report (status, message, inverted, degenerate, nonfinite, d_area, iterations, "
+     "rejected_by_exact_check)");
   po::variables_map vm;
   try { po::store(po::parse_command_line(argc, argv, desc), vm); po::notify(vm); }
   catch(const std::exception& e) { std::cerr << "robustness_corpus: " << e.what() << "\n"; return 1; }
-  if(vm.count("help")) { std::cout << desc << "\n"; return 0; }
+  if(vm.count("help") || (corpus_only.empty() && method.empty())) { std::cout << desc << "\n"; return vm.count("help") ? 0 : 1; }
+
   if(!corpus_only.empty()) {
-    std::size_t written = 0;
+    json index = json::array();
     for(const Case& c : make_corpus(data)) {
-      if(c.kind == "api" || (!only.empty() && c.cls.find(only) == std::string::npos)) continue;
+      if(!only.empty() && c.cls.find(only) == std::string::npos) continue;
+      const std::string rel = c.kind + "/" + c.cls + "__" + c.name + ".off";
       fs::create_directories(corpus_only + "/" + c.kind);
-      std::ofstream(corpus_only + "/" + c.kind + "/" + c.cls + "__" + c.name + ".off", std::ios::binary) << c.text;
-      ++written;
+      std::ofstream(corpus_only + "/" + rel, std::ios::binary) << c.text;
+      if(c.kind == "api")
+        std::ofstream(corpus_only + "/" + c.kind + "/" + c.cls + "__" + c.name + ".json") << json{ { "initial_map_variant", c.api_variant } }.dump() << "\n";
+      index.push_back({ { "class", c.cls }, { "case", c.name }, { "kind", c.kind }, { "file", rel } });
     }
-    std::cout << "robustness_corpus: " << written << " cases written under " << corpus_only << "\n";
+    std::ofstream(corpus_only + "/cases.json") << index.dump(1) << "\n";
+    std::cout << "robustness_corpus: " << index.size() << " cases written under " << corpus_only << "\n";
     return 0;
   }
-  dlf = fs::absolute(dlf).string();
-  fs::create_directories(scratch + "/corpus");
-  fs::create_directories(scratch + "/run");
-  const std::string run_dir = fs::absolute(scratch + "/run").string();
 
-  const std::vector<Case> corpus = make_corpus(data);
-  json all = json::array();
-  std::size_t violations = 0, rejected_total = 0, dlf_ok = 0, dlf_runs = 0;
-  std::vector<std::string> violation_lines;
-  for(const Case& c : corpus) {
-    if(!only.empty() && c.cls.find(only) == std::string::npos) continue;
-    const std::string file = fs::absolute(scratch + "/corpus/" + c.cls + "__" + c.name + "__" + c.kind + ".off").string();
-    { std::ofstream o(file, std::ios::binary); o << c.text; }
-    std::vector<std::pair<std::string, json> > res;
-    if(c.kind == "api") {
-      res.push_back({ "dlf_api", run_forked([&]() { return run_api(c, file); }, timeout, run_dir) });
-    } else {
-      res.push_back({ c.kind == "sphere" ? "dlf_sphere" : "dlf_disk", run_dlf(dlf, c, file, run_dir, "certified", timeout) });
-      if(c.kind == "disk") {
-        res.push_back({ "dlf_disk_paper", run_dlf(dlf, c, file, run_dir, "paper", timeout) });
-        if(!no_cgal)
-          for(const char* m : { "cgal_iterative_authalic", "cgal_arap", "cgal_mvc" }) {
-            const std::string ms = m;
-            res.push_back({ ms, run_forked([&]() { return run_cgal(ms, file); }, timeout, run_dir) });
-          }
-      }
-    }
-    for(auto& mr : res) {
-      json& r = mr.second;
-      r["class"] = c.cls; r["case"] = c.name; r["kind"] = c.kind; r["method"] = mr.first; r["file"] = file;
-      if(mr.first.rfind("dlf", 0) == 0) {
-        ++dlf_runs;
-        if(r.value("status", "") == "ok") ++dlf_ok;
-        rejected_total += r.value("rejected_by_exact_check", std::size_t(0));
-      }
-      std::string what;
-      if(is_violation(r, what)) {
-        r["violation"] = what;
-        if(mr.first.rfind("dlf", 0) == 0) {
-          ++violations;
-          violation_lines.push_back(mr.first + " on " + c.cls + "/" + c.name + " (" + file + "): " + what + " [" + r.value("status", "") + "]");
-        }
-      }
-      std::cerr << c.cls << "/" << c.name << " [" << c.kind << "] " << mr.first << ": " << r.value("status", "?")
-                << (r.contains("violation") ? "  VIOLATION: " + r["violation"].get<std::string>() : "") << "\n";
-      all.push_back(r);
-    }
+  const std::set<std::string> methods = { "dlf_api", "cgal_iterative_authalic", "cgal_arap", "cgal_mvc" };
+  if(!methods.count(method)) {
+    std::cerr << "robustness_corpus: error: --run " << method << ": unknown method (dlf_api, cgal_iterative_authalic, cgal_arap, cgal_mvc)\n";
+    return 1;
   }
-
-  if(!json_out.empty()) std::ofstream(json_out) << all.dump(1) << "\n";
-
-  // ---- Markdown
-  std::ostringstream md;
-  std::vector<std::string> methods = { "dlf_disk", "dlf_disk_paper", "dlf_sphere", "dlf_api", "cgal_iterative_authalic", "cgal_arap", "cgal_mvc" };
-  md << "Corpus: " << corpus.size() << " cases; " << all.size() << " runs; " << dlf_runs << " DLF runs, " << dlf_ok << " ok.\n\n";
-  md << "**DLF violations (crash, hang, NaN output, folds in an ok result, exception, stray output file, exit code vs report): "
-     << violations << "**\n\n";
-  for(const std::string& v : violation_lines) md << "- " << v << "\n";
-  md << "\nAblation: trial steps that the double-precision test accepted and the exact predicate refused, summed over all DLF runs "
-        "(`rejected_by_exact_check`): **" << rejected_total << "**\n\n";
-  // Summary per class x method.
-  md << "### Per class and method\n\nEach cell: ok runs / runs; then `inv` = runs with inverted or degenerate faces in the output "
-        "(counted for every output, also from CGAL's methods that return OK), `crash`/`hang`, and the distinct error statuses.\n\n";
-  md << "| class |";
-  for(const std::string& m : methods) md << " " << m << " |";
-  md << "\n|---|";
-  for(std::size_t i = 0; i < methods.size(); ++i) md << "---|";
-  md << "\n";
-  std::vector<std::string> classes;
-  for(const json& r : all) if(std::find(classes.begin(), classes.end(), r["class"].get<std::string>()) == classes.end()) classes.push_back(r["class"]);
-  for(const std::string& cl : classes) {
-    md << "| " << cl << " |";
-    for(const std::string& m : methods) {
-      std::size_t n = 0, ok = 0, inv = 0, crash = 0, hang = 0, nan = 0;
-      std::set<std::string> errs;
-      for(const json& r : all) {
-        if(r["class"] != cl || r["method"] != m) continue;
-        ++n;
-        const std::string s = r.value("status", "");
-        if(s == "ok") ++ok;
-        else if(s.rfind("crash", 0) == 0) ++crash;
-        else if(s == "hang") ++hang;
-        else if(s != "skipped") errs.insert(s == "cli_error" ? "cli_error" : s);
-        if(r.value("inverted", 0) > 0 || r.value("degenerate", 0) > 0) ++inv;
-        if(r.value("nonfinite", false)) ++nan;
-      }
-      if(!n) { md << " |"; continue; }
-      md << " " << ok << "/" << n;
-      if(inv) md << ", **inv " << inv << "**";
-      if(nan) md << ", **NaN " << nan << "**";
-      if(crash) md << ", **crash " << crash << "**";
-      if(hang) md << ", **hang " << hang << "**";
-      for(const std::string& e : errs) md << ", " << e;
-      md << " |";
-    }
-    md << "\n";
+  if(case_file.empty() || report.empty()) {
+    std::cerr << "robustness_corpus: error: --run needs --case FILE and --report OUT.json\n";
+    return 1;
   }
-  // Detail per case.
-  md << "\n### Per case\n\nstatus (exit code for the CLI) · inverted+degenerate faces · d_area of the output (optimum 2; computed here "
-        "alike for all planar methods, from the report for the sphere) · seconds. `skipped`: CGAL cannot load the file as a "
-        "mesh with a border.\n\n| class | case | kind | method | status | inv | d_area | s | message |\n|---|---|---|---|---|---|---|---|---|\n";
-  for(const json& r : all) {
-    std::string msg = r.value("message", "");
-    std::replace(msg.begin(), msg.end(), '|', '/');
-    const std::string file = r.value("file", "");
-    if(msg.find(file) != std::string::npos && !file.empty()) msg.replace(msg.find(file), file.size(), "INPUT");
-    if(msg.size() > 110) msg = msg.substr(0, 107) + "...";
-    char d[32] = "";
-    if(r.contains("d_area")) std::snprintf(d, sizeof d, "%.4f", r["d_area"].get<double>());
-    char t[32];
-    std::snprintf(t, sizeof t, "%.3f", r.value("seconds", 0.0));
-    std::string st = r.value("status", "");
-    if(r.contains("exit")) st += " (" + std::to_string(r["exit"].get<int>()) + ")";
-    if(r.contains("violation")) st = "**" + st + ": " + r["violation"].get<std::string>() + "**";
-    const std::size_t inv = r.value("inverted", std::size_t(0)) + r.value("degenerate", std::size_t(0));
-    md << "| " << r["class"].get<std::string>() << " | " << r["case"].get<std::string>() << " | " << r["kind"].get<std::string>() << " | "
-       << r["method"].get<std::string>() << " | " << st << " | " << (r.contains("inverted") ? std::to_string(inv) : "") << " | " << d
-       << " | " << t << " | " << msg << " |\n";
+  // CGAL's iterative authalic prints every iteration on stdout.
+  if(!std::freopen("/dev/null", "w", stdout)) std::cerr << "robustness_corpus: warning: stdout not silenced\n";
+  json r;
+  try {
+    r = method == "dlf_api" ? run_api(api_variant_of(case_file), case_file) : run_cgal(method, case_file);
+  } catch(const std::exception& e) {
+    r = { { "status", "exception" }, { "message", e.what() } };
+  } catch(...) {
+    r = { { "status", "exception" }, { "message", "unknown exception" } };
   }
-  if(!md_out.empty()) std::ofstream(md_out) << md.str();
-  std::cout << "runs " << all.size() << ", DLF runs " << dlf_runs << " (ok " << dlf_ok << "), DLF violations " << violations
-            << ", rejected_by_exact_check total " << rejected_total << "\n";
-  for(const std::string& v : violation_lines) std::cout << "  " << v << "\n";
-  return violations == 0 ? 0 : 3;
+  r["method"] = method;
+  if(!write_report(report, r)) {
+    std::cerr << "robustness_corpus: error: cannot write " << report << "\n";
+    return 1;
+  }
+  return 0;
 }

@@ -10,6 +10,12 @@ the table ``runs``, whose primary key is (mesh, config): a study that is
 interrupted (Ctrl-C, a killed worker, a lost client) and run again skips the
 rows it has and runs the others, so that no row is lost or written twice.
 
+Besides the ``dlf`` tool, a study can run an external runner (``--runner``),
+one case per process, for methods that are not commands of the tool
+(robustness studies of the library API and of CGAL's parameterizers:
+benchmark/robustness.sh), and can check every map the tool writes
+(``--check-outputs``).
+
 See doc/python.md ("Corpus studies") for the commands and the columns.
 """
 
@@ -17,6 +23,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import os
 import shutil
 import signal
@@ -27,6 +34,7 @@ import sys
 import tempfile
 import time
 from dataclasses import dataclass
+from fractions import Fraction
 from pathlib import Path
 from typing import Dict, Iterable, List, Optional, Sequence, Tuple
 
@@ -83,9 +91,25 @@ CREATE TABLE IF NOT EXISTS runs (
   command        TEXT,              -- the command line that was run
   worker         TEXT,              -- host and process of the dask worker
   finished_at    TEXT NOT NULL,     -- UTC, ISO 8601
+  checked_inverted   INTEGER,       -- faces of the written map that are not positive (exact predicate; runner: against the majority)
+  checked_degenerate INTEGER,       -- faces of the written map with orientation zero
+  nonfinite      INTEGER,           -- 1: a NaN or infinite value in the written map
+  stray_output   INTEGER,           -- 1: a map file left by a run that failed
+  exit_mismatch  INTEGER,           -- 1: the exit code disagrees with the report's status
+  rejected_by_exact_check INTEGER,  -- the report's trial steps refused by the exact predicate alone
+  violation      TEXT,              -- a broken promise, when checked (--check-outputs, runners): see VIOLATIONS
+  map_d_area     REAL,              -- --check-outputs, disk maps: d_area of the written uv against the 3D triangles
   PRIMARY KEY (mesh, config)
 )
 """
+
+# Columns added after the first version of the table, added to an older
+# database when it is opened (a resumed study keeps its rows).
+ADDED_COLUMNS = (
+    ("checked_inverted", "INTEGER"), ("checked_degenerate", "INTEGER"), ("nonfinite", "INTEGER"),
+    ("stray_output", "INTEGER"), ("exit_mismatch", "INTEGER"), ("rejected_by_exact_check", "INTEGER"),
+    ("violation", "TEXT"), ("map_d_area", "REAL"),
+)
 
 
 # ---------------------------------------------------------------------------
@@ -93,12 +117,29 @@ CREATE TABLE IF NOT EXISTS runs (
 # ---------------------------------------------------------------------------
 
 
-def _run_tool(argv: Sequence[str], timeout: float) -> Tuple[Optional[int], Optional[int], str, float, bool]:
-    """Runs argv in its own process group; returns (exit code, signal,
+def _limit_memory(nbytes: int):
+    # Imported here, in the parent: the child (forked from a threaded
+    # worker) must not take the import lock before it execs.
+    import resource
+
+    setrlimit, which = resource.setrlimit, resource.RLIMIT_AS
+
+    def apply():  # in the child, before exec
+        setrlimit(which, (nbytes, nbytes))
+
+    return apply
+
+
+def _run_tool(argv: Sequence[str], timeout: float, cwd: Optional[str] = None,
+              memory_limit: Optional[float] = None) -> Tuple[Optional[int], Optional[int], str, float, bool]:
+    """Runs argv in its own process group (in `cwd`, with at most
+    `memory_limit` GiB of address space); returns (exit code, signal,
     stderr, seconds, timed out). At the timeout the group is killed."""
     start = time.monotonic()
+    limit = _limit_memory(int(memory_limit * (1 << 30))) if memory_limit else None
     with subprocess.Popen(
-        list(argv), stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, start_new_session=True
+        list(argv), stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, start_new_session=True,
+        cwd=cwd, preexec_fn=limit
     ) as p:
         try:
             _, err = p.communicate(timeout=timeout)
@@ -146,14 +187,207 @@ def _run_info(dlf: str, mesh: str, timeout: float, scratch: str) -> str:
         return "unknown"
 
 
-def run_one(mesh_key: str, mesh_path: str, config_name: str, dlf: str, timeout: float, every_config: bool = False) -> dict:
+def runner_config(method: str) -> Config:
+    """The configuration of a method of an external runner (``--runner``)."""
+    return Config(method, "runner", ("--run", method), f"RUNNER --run {method} --case MESH --report OUT.json")
+
+
+def config_of(name: str, runner: Optional[str] = None) -> Config:
+    if name in CONFIGS:
+        return CONFIGS[name]
+    if runner:
+        return runner_config(name)
+    raise KeyError(name)
+
+
+# ---------------------------------------------------------------------------
+# Checks of a written map (--check-outputs)
+# ---------------------------------------------------------------------------
+
+_EPS = 2.0 ** -53
+_ORIENT2D_BOUND = (3 + 16 * _EPS) * _EPS  # Shewchuk's ccwerrboundA
+_ORIENT3D_BOUND = (7 + 56 * _EPS) * _EPS  # Shewchuk's o3derrboundA
+
+
+def _sign(x) -> int:
+    return (x > 0) - (x < 0)
+
+
+def orient2d(a, b, c) -> int:
+    """The exact sign of the orientation of the points a, b, c (pairs of
+    floats): a floating-point filter, exact rationals when it cannot decide."""
+    left = (a[0] - c[0]) * (b[1] - c[1])
+    right = (a[1] - c[1]) * (b[0] - c[0])
+    det = left - right
+    bound = _ORIENT2D_BOUND * (abs(left) + abs(right))
+    if math.isfinite(det) and abs(det) > bound and bound > 1e-280:
+        return _sign(det)
+    a, b, c = ([Fraction(x) for x in p] for p in (a, b, c))
+    return _sign((a[0] - c[0]) * (b[1] - c[1]) - (a[1] - c[1]) * (b[0] - c[0]))
+
+
+def orient3d_origin(a, b, c) -> int:
+    """The exact sign of det[a, b, c] (CGAL::orientation(O, a, b, c)): a
+    filter, exact rationals when it cannot decide."""
+    m1, m2, m3 = b[1] * c[2] - b[2] * c[1], c[1] * a[2] - c[2] * a[1], a[1] * b[2] - a[2] * b[1]
+    det = a[0] * m1 + b[0] * m2 + c[0] * m3
+    perm = ((abs(b[1] * c[2]) + abs(b[2] * c[1])) * abs(a[0]) + (abs(c[1] * a[2]) + abs(c[2] * a[1])) * abs(b[0])
+            + (abs(a[1] * b[2]) + abs(a[2] * b[1])) * abs(c[0]))
+    bound = _ORIENT3D_BOUND * perm
+    if math.isfinite(det) and abs(det) > bound and bound > 1e-280:
+        return _sign(det)
+    a, b, c = ([Fraction(x) for x in p] for p in (a, b, c))
+    return _sign(a[0] * (b[1] * c[2] - b[2] * c[1]) + b[0] * (c[1] * a[2] - c[2] * a[1])
+                 + c[0] * (a[1] * b[2] - a[2] * b[1]))
+
+
+def read_obj_map(path: str):
+    """(v, vt, faces) of an OBJ the tool writes: faces as triples of (v, vt)
+    index pairs, 0-based (vt None when the face has none). Raises ValueError
+    on anything it cannot read."""
+    v, vt, faces = [], [], []
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            w = line.split()
+            if not w:
+                continue
+            if w[0] in ("v", "vt"):
+                n = 3 if w[0] == "v" else 2
+                if len(w) < n + 1:
+                    raise ValueError(f"{path}: a short line: {line.strip()}")
+                (v if n == 3 else vt).append(tuple(float(x) for x in w[1:n + 1]))
+            elif w[0] == "f":
+                if len(w) != 4:
+                    raise ValueError(f"{path}: a face that is not a triangle: {line.strip()}")
+                corners = []
+                for c in w[1:]:
+                    parts = c.split("/")
+                    corners.append((int(parts[0]) - 1, int(parts[1]) - 1 if len(parts) > 1 and parts[1] else None))
+                faces.append(corners)
+    for corners in faces:
+        for i, t in corners:
+            if not 0 <= i < len(v) or (t is not None and not 0 <= t < len(vt)):
+                raise ValueError(f"{path}: an index out of range")
+    if not faces:
+        raise ValueError(f"{path}: no faces")
+    return v, vt, faces
+
+
+def check_map(path: str, sphere: bool) -> Dict[str, Optional[float]]:
+    """Checks a map the tool wrote: every value finite; every face positive
+    by the exact predicate (the uv triangle of a disk map, or det[p, q, r]
+    of the sphere points). Returns nonfinite, checked_inverted (faces that
+    are negative), checked_degenerate (faces of orientation zero) and, for a
+    disk map, map_d_area."""
+    v, vt, faces = read_obj_map(path)
+    points = v if sphere else vt
+    if any(not math.isfinite(x) for p in points for x in p):
+        return {"nonfinite": 1, "checked_inverted": None, "checked_degenerate": None}
+    if not sphere and any(t is None for corners in faces for _, t in corners):
+        raise ValueError(f"{path}: a face without texture coordinates")
+    neg = zero = 0
+    for corners in faces:
+        if sphere:
+            o = orient3d_origin(*(v[i] for i, _ in corners))
+        else:
+            o = orient2d(*(vt[t] for _, t in corners))
+        neg += o < 0
+        zero += o == 0
+    result = {"nonfinite": 0, "checked_inverted": neg, "checked_degenerate": zero}
+    if not sphere:
+        result["map_d_area"] = _map_d_area(v, vt, faces)
+    return result
+
+
+def _map_d_area(v, vt, faces) -> Optional[float]:
+    """d_area (doc/design.md, "Metrics") of a uv map against its 3D
+    triangles, without a density: sum of w_t (r_t + 1/r_t), r_t the face's
+    share of the map's area over its share of the surface's; None when a
+    face has no positive area in doubles."""
+    a2, a3 = [], []
+    for corners in faces:
+        (p, q, r), (s, t, u) = ([v[i] for i, _ in corners], [vt[j] for _, j in corners])
+        a2.append(0.5 * ((t[0] - s[0]) * (u[1] - s[1]) - (t[1] - s[1]) * (u[0] - s[0])))
+        e1 = [q[k] - p[k] for k in range(3)]
+        e2 = [r[k] - p[k] for k in range(3)]
+        n = (e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0])
+        a3.append(0.5 * math.sqrt(n[0] ** 2 + n[1] ** 2 + n[2] ** 2))
+    s2, s3 = sum(a2), sum(a3)
+    if not (s2 > 0 and s3 > 0) or min(a2) <= 0 or min(a3) <= 0:
+        return None
+    d = 0.0
+    for x, y in zip(a2, a3):
+        ratio = (x / s2) / (y / s3)
+        d += (y / s3) * (ratio + 1 / ratio)
+    return d if math.isfinite(d) else None
+
+
+# What counts as a violation: a crash or hang of the tool or runner, an
+# exception escaping the runner, a non-finite value in a map, a folded or
+# flat face in a map given as valid, a map file left by a failed run, an
+# exit code that disagrees with the report or is none of the tool's (0-3),
+# a map that cannot be read.
+VIOLATIONS = ("crash", "hang", "unexpected exit code", "runner error", "exception escaped", "NaN/Inf in output",
+              "inverted/degenerate faces in an ok result", "output file left by a failed run",
+              "exit code disagrees with report status", "unreadable output")
+
+
+def violation_of(row: dict) -> Optional[str]:
+    status = row["status"]
+    if status == "crash":
+        return "crash"
+    if status == "timeout":
+        return "hang"
+    if status == "error":
+        if row.get("config") in CONFIGS:
+            return "unexpected exit code"
+        return "exception escaped" if row.get("error") == "exception" else "runner error"
+    if row.get("nonfinite"):
+        return "NaN/Inf in output"
+    if status in ("ok", "not_converged") and ((row.get("checked_inverted") or 0) > 0
+                                            or (row.get("checked_degenerate") or 0) > 0):
+        return "inverted/degenerate faces in an ok result"
+    if row.get("stray_output"):
+        return "output file left by a failed run"
+    if row.get("exit_mismatch"):
+        return "exit code disagrees with report status"
+    if row.get("_unreadable"):
+        return "unreadable output"
+    return None
+
+
+def _status_of_exit(code: Optional[int], sig: Optional[int], timed_out: bool) -> str:
+    if timed_out:
+        return "timeout"
+    if sig is not None:
+        return "crash"
+    return {0: "ok", 3: "not_converged", 1: "input_error", 2: "flow_error"}.get(code, "error")
+
+
+def _read_json(path: str) -> Optional[dict]:
+    if not os.path.exists(path):
+        return None
+    try:
+        with open(path, encoding="utf-8") as f:
+            value = json.load(f)
+        return value if isinstance(value, dict) else None
+    except (OSError, ValueError):
+        return None
+
+
+def run_one(mesh_key: str, mesh_path: str, config_name: str, dlf: Optional[str], timeout: float,
+            every_config: bool = False, runner: Optional[str] = None, check_outputs: bool = False,
+            memory_limit: Optional[float] = None) -> dict:
     """One row of ``runs``: `dlf info` decides whether the configuration
     applies (a mesh that fits neither command is given to both, whose
     refusal is the result; with `every_config`, every mesh is given to
-    every configuration), then the configuration runs with a timeout."""
-    config = CONFIGS[config_name]
+    every configuration), then the configuration runs with a timeout, in a
+    scratch folder of its own. A runner's method runs on every mesh."""
+    config = config_of(config_name, runner)
     row = {"mesh": mesh_key, "config": config_name, "worker": f"{socket.gethostname()}:{os.getpid()}"}
     with tempfile.TemporaryDirectory(prefix="dlf-study-") as scratch:
+        if config.command == "runner":
+            return _run_runner(row, runner, config, mesh_path, timeout, scratch, memory_limit)
         fits = _mesh_fits(dlf, mesh_path, timeout, scratch)
         row["fits"] = fits
         if not every_config and fits in ("dlf disk", "dlf sphere") and fits != "dlf " + config.command:
@@ -162,27 +396,19 @@ def run_one(mesh_key: str, mesh_path: str, config_name: str, dlf: str, timeout: 
         report_path = os.path.join(scratch, "report.json")
         argv = [dlf, config.command, mesh_path, *config.options, "--report", report_path, "--quiet"]
         row["command"] = " ".join(argv[1:3] + list(config.options))
-        code, sig, err, seconds, timed_out = _run_tool(argv, timeout)
+        maps = []
+        if check_outputs:
+            # The paper mode certifies its flowing (flipped) triangulation, not
+            # the caller's triangles (doc/design.md): that is the map checked.
+            paper = config.command == "disk" and "paper" in config.options
+            maps = [os.path.join(scratch, "map.obj")] + ([os.path.join(scratch, "domain.obj")] if paper else [])
+            argv += ["-o", maps[0]] + (["--domain-mesh", maps[1]] if paper else [])
+        code, sig, err, seconds, timed_out = _run_tool(argv, timeout, scratch, memory_limit)
         row.update(exit_code=code, exit_signal=sig, seconds=seconds, stderr_tail=err[-STDERR_TAIL:])
-        report = None
-        if os.path.exists(report_path):
-            try:
-                with open(report_path, encoding="utf-8") as f:
-                    report = json.load(f)
-            except (OSError, ValueError):
-                report = None
-    if timed_out:
-        row["status"] = "timeout"
-    elif sig is not None:
-        row["status"] = "crash"
-    elif code in (0, 3):
-        row["status"] = "ok" if code == 0 else "not_converged"
-    elif code == 1:
-        row["status"] = "input_error"
-    elif code == 2:
-        row["status"] = "flow_error"
-    else:
-        row["status"] = "error"
+        report = _read_json(report_path)
+        row["status"] = _status_of_exit(code, sig, timed_out)
+        if check_outputs and not timed_out and sig is None:
+            _check_outputs(row, config, code, report, maps)
     if report is not None:
         report.pop("history", None)
         final = report.get("final") or {}
@@ -193,6 +419,7 @@ def run_one(mesh_key: str, mesh_path: str, config_name: str, dlf: str, timeout: 
             vertices=report.get("vertices"),
             faces=report.get("faces"),
             iterations=report.get("iterations"),
+            rejected_by_exact_check=report.get("rejected_by_exact_check"),
             report=json.dumps(report),
         )
         if row["status"] not in ("ok", "not_converged"):
@@ -200,6 +427,62 @@ def run_one(mesh_key: str, mesh_path: str, config_name: str, dlf: str, timeout: 
     if row.get("error") is None and row["status"] in ("input_error", "flow_error", "error"):
         lines = [l for l in err.splitlines() if l.startswith("dlf: error:")]
         row["error"] = lines[-1][len("dlf: error: "):] if lines else None
+    if check_outputs:
+        row["violation"] = violation_of(row)
+    row.pop("_unreadable", None)
+    return _finish(row)
+
+
+def _check_outputs(row: dict, config: Config, code: Optional[int], report: Optional[dict], maps: List[str]) -> None:
+    """The checks of --check-outputs on a run that exited: the exit code
+    against the report's status, no map left by a failed run, and the map
+    of a valid run checked face by face."""
+    status = report.get("status") if report is not None else None
+    row["exit_mismatch"] = int((code == 0) != (status == "ok") or (code == 3) != (status == "not_converged"))
+    wrote = code in (0, 3)
+    row["stray_output"] = int(not wrote and any(os.path.exists(m) for m in maps))
+    if wrote:
+        try:
+            row.update(check_map(maps[-1], sphere=config.command == "sphere"))
+        except (OSError, ValueError, UnicodeDecodeError):
+            row["_unreadable"] = True
+
+
+def _run_runner(row: dict, runner: str, config: Config, mesh_path: str, timeout: float, scratch: str,
+                memory_limit: Optional[float]) -> dict:
+    """A method of the external runner on one mesh: the runner writes a JSON
+    report (status: ok, not_converged, an error name, skipped when it cannot
+    load the mesh, exception; message; inverted, degenerate, nonfinite,
+    d_area, iterations, rejected_by_exact_check) and exits 0."""
+    report_path = os.path.join(scratch, "report.json")
+    argv = [runner, *config.options, "--case", mesh_path, "--report", report_path]
+    row["command"] = " ".join([os.path.basename(runner), *config.options, "--case", os.path.basename(mesh_path)])
+    code, sig, err, seconds, timed_out = _run_tool(argv, timeout, scratch, memory_limit)
+    row.update(exit_code=code, exit_signal=sig, seconds=seconds, stderr_tail=err[-STDERR_TAIL:])
+    report = _read_json(report_path) if code == 0 and not timed_out else None
+    if timed_out or sig is not None:
+        row["status"] = _status_of_exit(code, sig, timed_out)
+    elif report is None or not isinstance(report.get("status"), str):
+        row["status"] = "error"
+        lines = [l for l in err.splitlines() if l.strip()]
+        row["error"] = lines[-1][:500] if lines else f"exit {code} without a report"
+    else:
+        status = report["status"]
+        row["status"] = {"ok": "ok", "not_converged": "not_converged", "skipped": "input_error",
+                         "exception": "error"}.get(status, "flow_error")
+        if row["status"] not in ("ok", "not_converged"):
+            row["error"] = status
+        row.update(
+            d_area=report.get("d_area"),
+            inverted_faces=report.get("inverted"),
+            checked_inverted=report.get("inverted"),
+            checked_degenerate=report.get("degenerate"),
+            nonfinite=None if report.get("nonfinite") is None else int(bool(report["nonfinite"])),
+            iterations=report.get("iterations"),
+            rejected_by_exact_check=report.get("rejected_by_exact_check"),
+            report=json.dumps(report),
+        )
+    row["violation"] = violation_of(row)
     return _finish(row)
 
 
@@ -215,7 +498,8 @@ def _finish(row: dict) -> dict:
 COLUMNS = (
     "mesh", "config", "status", "stop_reason", "d_area", "inverted_faces", "seconds", "vertices", "faces",
     "iterations", "fits", "error", "exit_code", "exit_signal", "stderr_tail", "report", "command", "worker",
-    "finished_at",
+    "finished_at", "checked_inverted", "checked_degenerate", "nonfinite", "stray_output", "exit_mismatch",
+    "rejected_by_exact_check", "violation", "map_d_area",
 )
 
 
@@ -223,6 +507,10 @@ def open_db(path: str) -> sqlite3.Connection:
     db = sqlite3.connect(path, timeout=60)
     db.execute("PRAGMA journal_mode=WAL")
     db.execute(SCHEMA)
+    have = {r[1] for r in db.execute("PRAGMA table_info(runs)")}
+    for name, kind in ADDED_COLUMNS:
+        if name not in have:
+            db.execute(f"ALTER TABLE runs ADD COLUMN {name} {kind}")
     db.commit()
     return db
 
@@ -270,6 +558,32 @@ def corpus_meshes(inputs: Iterable[str]) -> List[Tuple[str, str]]:
     return sorted(found.items())
 
 
+def parse_configs(items: Sequence[str], runner: Optional[str]) -> Dict[str, List[str]]:
+    """NAME[@FOLDER[,FOLDER...]] items: each configuration and the folders
+    (below the corpus folders) of the meshes it runs on (empty: all). A
+    name that is not one of CONFIGS is a method of the runner."""
+    selected: Dict[str, List[str]] = {}
+    for item in items:
+        name, _, where = item.partition("@")
+        if name not in CONFIGS and not runner:
+            raise SystemExit(f"dlf-study: error: unknown configuration {name!r} (known: {', '.join(CONFIGS)}; "
+                             "or a method of --runner)")
+        if not name or (item.count("@") and not where):
+            raise SystemExit(f"dlf-study: error: --config {item}: expected NAME or NAME@FOLDER")
+        under = [w.strip("/") for w in where.split(",")] if where else []
+        if name in selected and selected[name] != under:
+            raise SystemExit(f"dlf-study: error: configuration {name} given twice with different folders")
+        selected[name] = under
+    return selected
+
+
+def find_runner(given: str) -> str:
+    path = shutil.which(given) if os.sep not in given else given
+    if not path or not (os.path.isfile(path) and os.access(path, os.X_OK)):
+        raise SystemExit(f"dlf-study: error: --runner {given}: not an executable")
+    return os.path.abspath(path)
+
+
 def find_dlf(given: Optional[str]) -> str:
     for candidate in (given, os.environ.get("DLF_EXECUTABLE"), shutil.which("dlf")):
         if candidate:
@@ -287,23 +601,28 @@ def find_dlf(given: Optional[str]) -> str:
 def run_study(args: argparse.Namespace) -> int:
     from distributed import Client, LocalCluster, as_completed  # late: `report` needs no dask
 
-    configs = args.config or list(DEFAULT_CONFIGS)
-    for c in configs:
-        if c not in CONFIGS:
-            raise SystemExit(f"dlf-study: error: unknown configuration {c!r} (known: {', '.join(CONFIGS)})")
+    selected = parse_configs(args.config or list(DEFAULT_CONFIGS), args.runner)
     if not args.timeout > 0:
         raise SystemExit("dlf-study: error: --timeout must be > 0")
-    dlf = find_dlf(args.dlf)
+    if args.memory_limit is not None and not args.memory_limit > 0:
+        raise SystemExit("dlf-study: error: --memory-limit must be > 0")
+    runner = find_runner(args.runner) if args.runner else None
+    dlf = find_dlf(args.dlf) if any(c in CONFIGS for c in selected) else None
     meshes = corpus_meshes(args.corpus)
+    runs = [(key, path, c) for c, under in selected.items() for key, path in meshes
+            if not under or any(key.startswith(u + "/") for u in under)]
+    for c, under in selected.items():
+        if under and not any(r[2] == c for r in runs):
+            raise SystemExit(f"dlf-study: error: --config {c}@{'/'.join(under)}: no mesh under that folder")
     db = open_db(args.db)
     done = done_keys(db)
-    todo = [(key, path, c) for key, path in meshes for c in dict.fromkeys(configs) if (key, c) not in done]
+    todo = [(key, path, c) for key, path, c in runs if (key, c) not in done]
     # Largest files first (dask runs tasks about in submission order): the
     # longest runs start early instead of leaving one worker busy at the end.
     todo.sort(key=lambda t: -os.path.getsize(t[1]))
-    total = len(meshes) * len(dict.fromkeys(configs))
+    total = len(runs)
     log = (lambda *a: None) if args.quiet else (lambda *a: print(*a, file=sys.stderr, flush=True))
-    log(f"dlf-study: {len(meshes)} meshes x {len(set(configs))} configurations = {total} runs; "
+    log(f"dlf-study: {len(meshes)} meshes, {len(selected)} configurations: {total} runs; "
         f"{total - len(todo)} already in {args.db}, {len(todo)} to run")
     if not todo:
         return 0
@@ -320,7 +639,8 @@ def run_study(args: argparse.Namespace) -> int:
     futures = []
     try:
         futures = [
-            client.submit(run_one, key, path, c, dlf, args.timeout, args.every_config,
+            client.submit(run_one, key, path, c, dlf, args.timeout, args.every_config, runner,
+                          args.check_outputs, args.memory_limit,
                           key=f"dlf-study-{c}-{key}-{args.db}",
                           pure=False, retries=args.retries)
             for key, path, c in todo
@@ -405,6 +725,15 @@ def summary_markdown(db: sqlite3.Connection) -> str:
             tail = (r["stderr_tail"] or "").strip().splitlines()[-1:] or [""]
             out.append(f"| {r['mesh']} | {r['config']} | {r['status']} | {_fmt(r['exit_signal'])} | "
                        f"{tail[0].replace('|', '/')[:160]} |")
+    checked = [r for r in rows if r["violation"] is not None or r["exit_mismatch"] is not None
+               or r["checked_inverted"] is not None]
+    if checked:
+        broken = [r for r in rows if r["violation"]]
+        out += [f"Violations among the checked runs ({len(checked)}): {len(broken)}.", ""]
+        if broken:
+            out += ["| mesh | configuration | status | violation |", "|---|---|---|---|"]
+            out += [f"| {r['mesh']} | {r['config']} | {r['status']} | {r['violation']} |" for r in broken]
+            out.append("")
     refused = [r for r in rows if r["status"] in ("input_error", "flow_error")]
     if refused:
         out += ["", "Inputs the tool refused, and why:", "", "| mesh | configuration | status | error |", "|---|---|---|---|"]
@@ -493,13 +822,22 @@ def parser() -> argparse.ArgumentParser:
     where.add_argument("--scheduler", metavar="ADDRESS", help="an existing dask scheduler, e.g. tcp://host:8786")
     r.add_argument("--timeout", type=float, default=300, metavar="SECONDS",
                    help="a run taking longer is killed and recorded as timeout (default 300)")
-    r.add_argument("--config", action="append", metavar="NAME",
-                   help="a configuration (repeatable; default: " + ", ".join(DEFAULT_CONFIGS) + "); known: "
-                   + ", ".join(CONFIGS))
+    r.add_argument("--config", action="append", metavar="NAME[@FOLDER]",
+                   help="a configuration, NAME or NAME@FOLDER[,FOLDER] to run it only on the meshes under those "
+                        "folders of the corpus (repeatable; default: " + ", ".join(DEFAULT_CONFIGS) + "); known: "
+                   + ", ".join(CONFIGS) + "; any other NAME is a method of --runner")
     r.add_argument("--every-config", action="store_true",
                    help="give every mesh to every configuration, whatever its topology (robustness studies: "
                         "the tool's refusal is the result)")
     r.add_argument("--dlf", metavar="PATH", help="the dlf executable (default: $DLF_EXECUTABLE, or dlf on PATH)")
+    r.add_argument("--runner", metavar="PATH",
+                   help="an external runner: a configuration NAME that is not the tool's runs "
+                        "`PATH --run NAME --case MESH --report OUT.json` (doc/python.md, \"Runners\")")
+    r.add_argument("--check-outputs", action="store_true",
+                   help="have dlf write each map and check it: every face positive (exact predicate), finite "
+                        "values, no map left by a failed run, exit code as the report's status; fills `violation`")
+    r.add_argument("--memory-limit", type=float, metavar="GIB",
+                   help="address-space limit of each run (RLIMIT_AS), in GiB (default: none)")
     r.add_argument("--retries", type=int, default=0, metavar="K",
                    help="re-run a task whose worker died K more times (dask also reschedules the tasks of a "
                         "lost worker by itself)")

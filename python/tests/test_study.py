@@ -16,6 +16,7 @@ import sqlite3
 import subprocess
 import sys
 import time
+from pathlib import Path
 
 import psutil
 import pytest
@@ -219,3 +220,279 @@ def test_study_on_an_existing_scheduler(corpus, tmp_path):
     # Run by the cluster's worker, not by a LocalCluster of the study's own.
     assert len(pids) == 1
     assert {r["worker"].split(":")[-1] for r in rows.values()} == pids
+
+
+# ---------------------------------------------------------------------------
+# Runners (--runner) and the checks of the written maps (--check-outputs)
+# ---------------------------------------------------------------------------
+
+RUNNER_CONFIGS = ("alpha@disk", "beta@api", "gamma")
+
+
+@pytest.fixture(scope="module")
+def runner_corpus(tmp_path_factory):
+    """disk/{plain,crash,hang,folds,broken,exc}.off and api/{plain,exc}.off,
+    and a runner that, by the case's name, writes a valid report, crashes,
+    hangs, reports folds, exits 1 without a report or reports an escaped
+    exception; it sleeps $FAKE_DELAY first."""
+    root = tmp_path_factory.mktemp("runner")
+    corpus = root / "corpus"
+    for sub, names in (("disk", ("plain", "crash", "hang", "folds", "broken", "exc")), ("api", ("plain", "exc"))):
+        (corpus / sub).mkdir(parents=True)
+        for n in names:
+            (corpus / sub / f"{n}.off").write_text("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+    runner = root / "runner"
+    runner.write_text("""#!/bin/sh
+# runner --run METHOD --case FILE --report OUT
+sleep "${FAKE_DELAY:-0}"
+method=$2; case=$4; out=$6
+inv=0; status=ok
+case "$case" in
+  *crash.off) echo "runner about to crash" >&2; kill -SEGV $$ ;;
+  *hang.off) sleep 600 ;;
+  *folds.off) inv=2 ;;
+  *broken.off) echo "runner: cannot load $case" >&2; exit 1 ;;
+  *exc.off) status=exception ;;
+esac
+printf '{"status": "%s", "message": "%s on %s", "inverted": %s, "degenerate": 0, "nonfinite": false, "d_area": 2.5, "iterations": 7}\\n' \
+  "$status" "$method" "$(basename "$case")" "$inv" > "$out"
+""")
+    runner.chmod(0o755)
+    return corpus, str(runner)
+
+
+def runner_command(corpus, db, runner, *extra):
+    return [sys.executable, "-m", "discrete_lie_flow.study", "run", str(corpus), "--db", str(db), "--workers", "2",
+            "--timeout", "3", "--runner", runner, "--memory-limit", "4", "-q",
+            *[a for c in RUNNER_CONFIGS for a in ("--config", c)], *extra]
+
+
+RUNNER_KEYS = ({(f"disk/{n}.off", c) for n in ("plain", "crash", "hang", "folds", "broken", "exc") for c in ("alpha", "gamma")}
+               | {(f"api/{n}.off", c) for n in ("plain", "exc") for c in ("beta", "gamma")})
+
+
+def check_runner_rows(rows):
+    assert set(rows) == RUNNER_KEYS  # every (case, method) of its folders, once
+    for (mesh, config), r in rows.items():
+        name = mesh.split("/")[1]
+        assert r["fits"] is None and r["command"].startswith(f"runner --run {config} --case {name}")
+        if name == "crash.off":
+            assert r["status"] == "crash" and r["exit_signal"] == signal.SIGSEGV and r["violation"] == "crash"
+            assert "about to crash" in r["stderr_tail"] and r["report"] is None
+        elif name == "hang.off":
+            assert r["status"] == "timeout" and r["exit_signal"] == signal.SIGKILL and r["violation"] == "hang"
+        elif name == "broken.off":
+            assert r["status"] == "error" and r["exit_code"] == 1 and r["violation"] == "runner error"
+            assert "cannot load" in r["error"]
+        elif name == "exc.off":
+            assert r["status"] == "error" and r["error"] == "exception" and r["violation"] == "exception escaped"
+        else:
+            report = json.loads(r["report"])
+            assert report["message"] == f"{config} on {name}"
+            assert r["status"] == "ok" and r["d_area"] == 2.5 and r["iterations"] == 7 and r["nonfinite"] == 0
+            assert r["checked_inverted"] == r["inverted_faces"] == (2 if name == "folds.off" else 0)
+            assert r["violation"] == ("inverted/degenerate faces in an ok result" if name == "folds.off" else None)
+
+
+def test_runner_configurations(runner_corpus, tmp_path):
+    """Interrupted, resumed, run again: every row once, as it was first written."""
+    corpus, runner = runner_corpus
+    db = tmp_path / "study.sqlite"
+    env = dict(os.environ, FAKE_DELAY="0.3")
+    p = subprocess.Popen(runner_command(corpus, db, runner), env=env, stdout=subprocess.DEVNULL,
+                         stderr=subprocess.PIPE, text=True)
+    deadline = time.time() + 120
+    while count_rows(db) < 3 and time.time() < deadline and p.poll() is None:
+        time.sleep(0.05)
+    p.send_signal(signal.SIGINT)
+    _, err = p.communicate(timeout=120)
+    assert p.returncode == 130, err
+    first = rows_of(db)
+    assert 3 <= len(first) < len(RUNNER_KEYS)
+    p = subprocess.run(runner_command(corpus, db, runner), capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0, p.stderr
+    rows = rows_of(db)
+    check_runner_rows(rows)
+    for key, row in first.items():
+        assert rows[key] == row
+    again = [a for a in runner_command(corpus, db, runner) if a != "-q"]  # the progress line says what is left
+    p = subprocess.run(again, capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0 and f"{len(RUNNER_KEYS)} already in" in p.stderr and "0 to run" in p.stderr, p.stderr
+    assert rows_of(db) == rows
+    summary = study.summary_markdown(sqlite3.connect(db))
+    assert f"Violations among the checked runs ({len(RUNNER_KEYS)}): 12." in summary  # 6 kinds x 2
+    # A folder that holds no mesh is a mistake, not an empty study.
+    p = subprocess.run(runner_command(corpus, db, runner, "--config", "delta@sphere"), capture_output=True, text=True,
+                       timeout=120)
+    assert p.returncode == 1 and "delta@sphere: no mesh under that folder" in p.stderr
+
+
+def test_exact_orientation_filters():
+    """The filtered predicates against exact rationals, on triangles made
+    nearly flat at the rounding level (where the filter must defer)."""
+    import random
+    from fractions import Fraction
+
+    rng = random.Random(5)
+    for _ in range(3000):
+        a = (rng.uniform(-1, 1), rng.uniform(-1, 1))
+        b = (rng.uniform(-1, 1), rng.uniform(-1, 1))
+        t = rng.uniform(-2, 2)
+        c = (a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
+        if rng.random() < 0.5:
+            c = (c[0] + rng.choice((-1, 1)) * rng.random() * 1e-15, c[1])
+        F = [[Fraction(x) for x in p] for p in (a, b, c)]
+        exact = (F[0][0] - F[2][0]) * (F[1][1] - F[2][1]) - (F[0][1] - F[2][1]) * (F[1][0] - F[2][0])
+        assert study.orient2d(a, b, c) == (exact > 0) - (exact < 0)
+        p3 = [tuple(rng.uniform(-1, 1) for _ in range(3)) for _ in range(2)]
+        s = rng.uniform(-2, 2)
+        q = tuple(p3[0][k] + s * p3[1][k] for k in range(3))  # det[a, b, a + s b] = 0 up to rounding
+        G = [[Fraction(x) for x in p] for p in (p3[0], p3[1], q)]
+        det = (G[0][0] * (G[1][1] * G[2][2] - G[1][2] * G[2][1]) + G[1][0] * (G[2][1] * G[0][2] - G[2][2] * G[0][1])
+               + G[2][0] * (G[0][1] * G[1][2] - G[0][2] * G[1][1]))
+        assert study.orient3d_origin(p3[0], p3[1], q) == (det > 0) - (det < 0)
+    assert study.orient2d((0.0, 0.0), (1.0, 0.0), (2.0, 0.0)) == 0
+    assert study.orient2d((0.0, 0.0), (1.0, 0.0), (0.5, 1e-300)) == 1
+
+
+@pytest.fixture(scope="module")
+def checked_corpus(tmp_path_factory):
+    """nefertiti and sphere.off as they are, and copies on which a wrapper of
+    dlf breaks a promise: a folded face in an ok map (fold), a map left by
+    a failed run (stray), exit 0 with a report that says otherwise (lie), a
+    face with an index out of range (garble)."""
+    root = tmp_path_factory.mktemp("checked")
+    corpus = root / "corpus"
+    corpus.mkdir()
+    for name in ("nefertiti.off", "sphere.off"):
+        src = os.path.join(MESHES, name)
+        if not os.path.exists(src):
+            pytest.skip(f"{src} missing (CGAL's data set)")
+        shutil.copy(src, corpus / name)
+    for name in ("fold", "stray", "lie", "garble"):
+        shutil.copy(corpus / "nefertiti.off", corpus / f"{name}.off")
+    fake = root / "fake-dlf"
+    edit = root / "edit.py"
+    edit.write_text("""import json, sys
+what, path = sys.argv[1], sys.argv[2]
+if what == "fold":  # swap two corners of the first face
+    lines = open(path).read().split("\\n")
+    i = next(k for k, l in enumerate(lines) if l.startswith("f "))
+    w = lines[i].split()
+    lines[i] = " ".join([w[0], w[2], w[1], w[3]])
+    open(path, "w").write("\\n".join(lines))
+else:  # the report says the flow failed
+    r = json.load(open(path))
+    r["status"] = "ERROR_FLOW_STALLED"
+    json.dump(r, open(path, "w"))
+""")
+    fake = root / "fake-dlf"
+    fake.write_text(f"""#!/bin/sh
+"{DLF}" "$@"; code=$?
+out=""; dom=""; rep=""; prev=""
+for a in "$@"; do
+  case "$prev" in -o) out=$a ;; --domain-mesh) dom=$a ;; --report) rep=$a ;; esac
+  prev=$a
+done
+[ "$1" = info ] && exit $code
+case "$2" in
+  *fold.off) for m in $out $dom; do "{sys.executable}" "{edit}" fold "$m"; done ;;
+  *stray.off) echo "dlf: error: made up" >&2; exit 1 ;;
+  *lie.off) "{sys.executable}" "{edit}" report "$rep"; exit 0 ;;
+  *garble.off) for m in $out $dom; do echo "f 1/1 2/2 999999/999999" >> "$m"; done ;;
+esac
+exit $code
+""")
+    fake.chmod(0o755)
+    return corpus, str(fake)
+
+
+def test_check_outputs(checked_corpus, tmp_path):
+    corpus, fake = checked_corpus
+    db = tmp_path / "study.sqlite"
+    p = subprocess.run([sys.executable, "-m", "discrete_lie_flow.study", "run", str(corpus), "--db", str(db),
+                        "--workers", "2", "--timeout", str(TIMEOUT), "--dlf", fake, "--check-outputs", "-q",
+                        "--config", "disk-certified", "--config", "disk-paper", "--config", "sphere"],
+                       capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0, p.stderr
+    rows = rows_of(db)
+    for config in ("disk-certified", "disk-paper"):
+        r = rows[("nefertiti.off", config)]
+        assert r["status"] == "ok" and r["violation"] is None, r
+        assert r["checked_inverted"] == 0 and r["checked_degenerate"] == 0 and r["nonfinite"] == 0
+        assert r["stray_output"] == 0 and r["exit_mismatch"] == 0 and r["rejected_by_exact_check"] == 0
+        assert rows[("fold.off", config)]["violation"] == "inverted/degenerate faces in an ok result"
+        assert rows[("stray.off", config)]["violation"] == "output file left by a failed run"
+        assert rows[("lie.off", config)]["violation"] == "exit code disagrees with report status"
+        assert rows[("garble.off", config)]["violation"] == "unreadable output"
+    # The study's d_area of the written map is the report's (the certified mode's map is the caller's mesh).
+    r = rows[("nefertiti.off", "disk-certified")]
+    assert abs(r["map_d_area"] - r["d_area"]) < 1e-9 * r["d_area"], r
+    assert rows[("nefertiti.off", "disk-paper")]["map_d_area"] >= 2
+    # One face of each checked map swapped: one fold (the paper mode's check is of its flowing mesh).
+    assert rows[("fold.off", "disk-certified")]["checked_inverted"] == 1
+    assert rows[("fold.off", "disk-paper")]["checked_inverted"] == 1
+    r = rows[("sphere.off", "sphere")]
+    assert r["status"] in ("ok", "not_converged") and r["checked_inverted"] == 0 and r["violation"] is None, r
+    assert rows[("nefertiti.off", "sphere")]["status"] == "not_applicable"
+
+
+ROBUSTNESS_CORPUS = os.environ.get("DLF_ROBUSTNESS_CORPUS")  # set by CTest when the benchmarks are built
+
+
+@pytest.mark.skipif(not ROBUSTNESS_CORPUS, reason="robustness_corpus not built (-DDLF_BUILD_BENCHMARK=ON)")
+def test_robustness_study_slice(tmp_path):
+    """Two classes of the robustness corpus (tiny: 4 disk and 1 sphere case;
+    folded_initial_map: 6 library-API cases) through dlf-study with the real
+    runner, as benchmark/robustness.sh runs them, and its tables."""
+    corpus = tmp_path / "corpus"
+    cases = []
+    for only in ("tiny", "folded_initial_map"):
+        part = tmp_path / only
+        subprocess.run([ROBUSTNESS_CORPUS, "--data", MESHES, "--only", only, "--corpus-only", str(part)], check=True,
+                       capture_output=True, timeout=120)
+        shutil.copytree(part, corpus, dirs_exist_ok=True)
+        cases += json.loads((part / "cases.json").read_text())
+    (corpus / "cases.json").write_text(json.dumps(cases))
+    db = tmp_path / "study.sqlite"
+    configs = ("disk-certified@disk", "disk-paper@disk", "sphere@sphere", "dlf_api@api", "cgal_mvc@disk",
+               "cgal_arap@disk")
+    p = subprocess.run([sys.executable, "-m", "discrete_lie_flow.study", "run", str(corpus), "--db", str(db),
+                        "--workers", "2", "--timeout", "60", "--memory-limit", "4", "--dlf", DLF,
+                        "--runner", ROBUSTNESS_CORPUS, "--every-config", "--check-outputs", "-q",
+                        *[a for c in configs for a in ("--config", c)]], capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0, p.stderr
+    rows = rows_of(db)
+    assert len(rows) == 4 * 4 + 1 + 6
+    api = {k[0].split("__")[1]: r for k, r in rows.items() if k[1] == "dlf_api"}
+    for name in ("nefertiti_mirrored.off", "nefertiti_identity_tutte.off"):
+        r = api[name]
+        assert r["status"] == "ok" and r["checked_inverted"] == 0 and r["checked_degenerate"] == 0, r
+        assert 2 <= r["d_area"] < 2.01 and r["violation"] is None
+    for name in ("nefertiti_vertex_reflected.off", "nefertiti_two_vertices_coincide.off",
+                 "nefertiti_all_collapsed.off", "nefertiti_nan_uv.off"):
+        r = api[name]
+        assert r["status"] == "flow_error" and r["error"] == "ERROR_INITIAL_MAP_FOLDED" and r["violation"] is None, r
+    r = rows[("disk/tiny__one_flat_triangle.off", "disk-certified")]
+    assert r["error"] == "ERROR_DEGENERATE_INPUT" and r["violation"] is None
+    r = rows[("disk/tiny__two_triangles.off", "cgal_mvc")]
+    assert r["status"] == "ok" and r["checked_inverted"] == 0 and r["violation"] is None
+    assert all(r["violation"] is None for k, r in rows.items() if not k[1].startswith("cgal"))
+    report = Path(__file__).resolve().parents[2] / "benchmark" / "robustness_report.py"
+    out = tmp_path / "table.md"
+    p = subprocess.run([sys.executable, str(report), str(db), str(corpus / "cases.json"), "--markdown", str(out)],
+                       capture_output=True, text=True, timeout=60)
+    # CGAL's iterative authalic is not in this study: its 4 rows are missing (exit 1); no DLF violation.
+    assert p.returncode == 1 and "DLF violations 0" in p.stdout and "missing 4" in p.stdout, p.stdout + p.stderr
+    table = out.read_text()
+    assert "| folded_initial_map |  |  |  | 2/6, ERROR_INITIAL_MAP_FOLDED |" in table
+    assert "| tiny | nefertiti" not in table and "| tiny | one_quad | disk | dlf_disk | cli_error (1) |" in table
+
+
+def test_memory_limit(tmp_path):
+    """--memory-limit caps each run's address space: 6 GiB cannot be had
+    under a 4 GiB limit, 100 MiB can."""
+    code, sig, err, _, timed_out = study._run_tool([sys.executable, "-c", "bytearray(6 << 30)"], 60, str(tmp_path), 4)
+    assert code == 1 and sig is None and not timed_out and "MemoryError" in err
+    code, _, err, _, _ = study._run_tool([sys.executable, "-c", "bytearray(100 << 20)"], 60, str(tmp_path), 4)
+    assert code == 0, err
