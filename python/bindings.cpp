@@ -22,6 +22,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -160,7 +161,8 @@ long long integer_arg(const py::object& x, const char* name)
 // The options common to both flows, as the tool's arguments.
 void add_flow_arguments(std::vector<std::string>& args, const std::string& mode, const py::object& tolerance,
                         const py::object& max_iterations, const py::object& mu, const py::object& share_tolerance,
-                        bool literal_targets, bool delaunay_flips, bool history)
+                        const py::object& fixed_step, const py::object& threshold, bool literal_targets,
+                        bool delaunay_flips, bool history)
 {
   args.insert(args.end(), { "--mode", word_arg(mode, "mode"), "--quiet" });
   if(!tolerance.is_none()) args.insert(args.end(), { "--tolerance", number(number_arg(tolerance, "tolerance")) });
@@ -171,6 +173,8 @@ void add_flow_arguments(std::vector<std::string>& args, const std::string& mode,
   }
   if(!mu.is_none()) args.insert(args.end(), { "--mu", number(number_arg(mu, "mu")) });
   if(!share_tolerance.is_none()) args.insert(args.end(), { "--share-tolerance", number(number_arg(share_tolerance, "share_tolerance")) });
+  if(!fixed_step.is_none()) args.insert(args.end(), { "--fixed-step", number(number_arg(fixed_step, "fixed_step")) });
+  if(!threshold.is_none()) args.insert(args.end(), { "--threshold", number(number_arg(threshold, "threshold")) });
   if(literal_targets) args.push_back("--literal-targets");
   if(!delaunay_flips) args.push_back("--no-flips");
   if(history) args.push_back("--history");
@@ -258,7 +262,8 @@ py::array_t<double> rows_of(const std::vector<double>& flat, py::ssize_t cols)
 
 py::tuple disk(const py::object& V, const py::object& F, const std::string& mode, const py::object& border,
                const std::string& init, const py::object& density, const py::object& tolerance,
-               const py::object& max_iterations, const py::object& mu, const py::object& share_tolerance,
+               const py::object& init_uv, const py::object& max_iterations, const py::object& mu,
+               const py::object& share_tolerance, const py::object& fixed_step, const py::object& threshold,
                int outer_loop, bool literal_targets, bool delaunay_flips, bool history, const py::object& callback,
                const std::string& name)
 {
@@ -270,15 +275,31 @@ py::tuple disk(const py::object& V, const py::object& F, const std::string& mode
     }
   }();
   const std::vector<double> density_values = density_of(density);
+  // The caller's own start (as --init-uv): one row per vertex, its border kept.
+  std::vector<std::array<double, 2> > start_uv;
+  if(!init_uv.is_none()) {
+    if(init != "tutte") value_error("init_uv and init exclude each other");
+    if(!border.is_none() && border.cast<std::string>() != "free")
+      value_error("init_uv keeps the map's own border: border=\"free\" only");
+    const std::vector<double> flat = real_matrix(init_uv, "init_uv", 2, py::ssize_t(input.xyz.size()));
+    for(std::size_t i = 0; i < flat.size() / 2; ++i) {
+      if(!std::isfinite(flat[2 * i]) || !std::isfinite(flat[2 * i + 1]))
+        value_error("init_uv: row " + std::to_string(i) + " is not finite");
+      start_uv.push_back({{ flat[2 * i], flat[2 * i + 1] }});
+    }
+  }
   std::vector<std::string> args{ word_arg(name, "name"), "--init", word_arg(init, "init"), "--outer-loop",
                                  std::to_string(outer_loop) };
-  if(!border.is_none()) args.insert(args.end(), { "--border", word_arg(border.cast<std::string>(), "border") });
-  add_flow_arguments(args, mode, tolerance, max_iterations, mu, share_tolerance, literal_targets, delaunay_flips, history);
+  if(!start_uv.empty()) args.insert(args.end(), { "--border", "free" });
+  else if(!border.is_none()) args.insert(args.end(), { "--border", word_arg(border.cast<std::string>(), "border") });
+  add_flow_arguments(args, mode, tolerance, max_iterations, mu, share_tolerance, fixed_step, threshold, literal_targets,
+                     delaunay_flips, history);
   dlf_cli::Disk_settings s;
   Python_callback progress(callback);
   dlf_cli::Disk_outcome outcome;
   try {
     if(!dlf_cli::parse_disk_arguments(args, s)) value_error("invalid options");
+    if(!start_uv.empty()) { s.init = "uv"; s.init_uv = start_uv; }
     // As with a density file: a density asks for a tighter default tolerance.
     if(!density_values.empty() && tolerance.is_none()) s.options.tolerance = dlf_cli::density_tolerance;
     progress.install(s.options);
@@ -298,8 +319,9 @@ py::tuple disk(const py::object& V, const py::object& F, const std::string& mode
 
 py::tuple sphere(const py::object& V, const py::object& F, const std::string& mode, const py::object& density,
                  const py::object& tolerance, const py::object& log_area_tolerance, const py::object& max_iterations,
-                 const py::object& mu, const py::object& share_tolerance, bool literal_targets, bool delaunay_flips,
-                 bool history, const std::string& start, const py::object& init_map, const py::object& callback,
+                 const py::object& mu, const py::object& share_tolerance, const py::object& fixed_step,
+                 const py::object& threshold, bool literal_targets, bool delaunay_flips, bool history,
+                 const std::string& start, const py::object& init_map, const py::object& callback,
                  const std::string& name)
 {
   const Indexed_mesh input = [&] {
@@ -321,7 +343,8 @@ py::tuple sphere(const py::object& V, const py::object& F, const std::string& mo
   }();
   const std::vector<double> density_values = density_of(density);
   std::vector<std::string> args{ word_arg(name, "name") };
-  add_flow_arguments(args, mode, tolerance, max_iterations, mu, share_tolerance, literal_targets, delaunay_flips, history);
+  add_flow_arguments(args, mode, tolerance, max_iterations, mu, share_tolerance, fixed_step, threshold, literal_targets,
+                     delaunay_flips, history);
   if(!log_area_tolerance.is_none())
     args.insert(args.end(), { "--log-area-tolerance", number(number_arg(log_area_tolerance, "log_area_tolerance")) });
   if(start != "tutte") {
@@ -407,13 +430,15 @@ PYBIND11_MODULE(_core, m)
 
   using namespace pybind11::literals;
   m.def("disk", &disk, "V"_a, "F"_a, py::kw_only(), "mode"_a = "certified", "border"_a = py::none(),
-        "init"_a = "tutte", "density"_a = py::none(), "tolerance"_a = py::none(), "max_iterations"_a = py::none(),
-        "mu"_a = py::none(), "share_tolerance"_a = py::none(), "outer_loop"_a = 0, "literal_targets"_a = false,
+        "init"_a = "tutte", "density"_a = py::none(), "tolerance"_a = py::none(), "init_uv"_a = py::none(),
+        "max_iterations"_a = py::none(), "mu"_a = py::none(), "share_tolerance"_a = py::none(),
+        "fixed_step"_a = py::none(), "threshold"_a = py::none(), "outer_loop"_a = 0, "literal_targets"_a = false,
         "delaunay_flips"_a = true, "history"_a = false, "callback"_a = py::none(), "name"_a = "mesh",
         "Maps a disk-topology mesh (or a disk with holes) onto the plane; see discrete_lie_flow.disk.");
   m.def("sphere", &sphere, "V"_a, "F"_a, py::kw_only(), "mode"_a = "certified", "density"_a = py::none(),
         "tolerance"_a = py::none(), "log_area_tolerance"_a = py::none(), "max_iterations"_a = py::none(),
-        "mu"_a = py::none(), "share_tolerance"_a = py::none(), "literal_targets"_a = false,
+        "mu"_a = py::none(), "share_tolerance"_a = py::none(), "fixed_step"_a = py::none(),
+        "threshold"_a = py::none(), "literal_targets"_a = false,
         "delaunay_flips"_a = true, "history"_a = false, "start"_a = "tutte", "init_map"_a = py::none(),
         "callback"_a = py::none(), "name"_a = "mesh",
         "Maps a closed genus-0 mesh onto the unit sphere; see discrete_lie_flow.sphere.");

@@ -36,8 +36,9 @@ __all__ = ["disk", "sphere", "score", "info", "FlowError", "__version__"]
 
 
 def disk(V, F, *, mode: str = "certified", border: Optional[str] = None, init: str = "tutte", density=None,
-         tolerance: Optional[float] = None, max_iterations: Optional[int] = None, mu: Optional[float] = None,
-         share_tolerance: Optional[float] = None, outer_loop: int = 0, literal_targets: bool = False,
+         tolerance: Optional[float] = None, init_uv=None, max_iterations: Optional[int] = None,
+         mu: Optional[float] = None, share_tolerance: Optional[float] = None, fixed_step: Optional[float] = None,
+         threshold: Optional[float] = None, outer_loop: int = 0, literal_targets: bool = False,
          delaunay_flips: bool = True, history: bool = False,
          callback: Optional[Callable[[Dict[str, Any]], Optional[bool]]] = None,
          name: str = "mesh") -> Tuple[Any, Dict[str, Any]]:
@@ -47,8 +48,9 @@ def disk(V, F, *, mode: str = "certified", border: Optional[str] = None, init: s
     uv: (n, 2) float64 array, the map of vertex i in row i, every triangle
     positively oriented. report: the dict of ``dlf disk --report``.
 
-    mode: "certified" (never folds the input triangles) or "paper" (the
-    paper's flow with edge flips; disks without holes only).
+    mode: "certified" (never folds the input triangles), "paper" (the
+    paper's flow with edge flips, stabilised; disks without holes only) or
+    "literal" (the paper's Algorithm 1 as printed, doc/paper_literal.md).
     border: "circle" or "square" (with init tutte, mvc, dcp; default circle),
     or "free" (the only choice, and the default, for lscm and arap).
     init: the initial map, "tutte", "mvc", "dcp", "lscm" or "arap".
@@ -56,6 +58,13 @@ def disk(V, F, *, mode: str = "certified", border: Optional[str] = None, init: s
     face then gets density times its share of the area (default tolerance
     5e-4 then, as with ``--density``).
     tolerance: stop when D_area - 2 <= tolerance (default 1e-2).
+    init_uv: the caller's own initial map instead of ``init`` (as
+    ``--init-uv``): an (n, 2) array, one row per vertex, every triangle
+    positively oriented (refused otherwise); its border is kept, the
+    vertices slide along it (``border="free"``, the only choice).
+    fixed_step: a fixed step instead of the adaptive one (``--fixed-step``).
+    threshold: the literal mode's stop, ||h_M - h_Omega||^2 < threshold
+    (``--threshold``).
     max_iterations, mu, share_tolerance, outer_loop, literal_targets,
     delaunay_flips: as the tool's options of the same names.
     history: add the per-iteration history to the report.
@@ -66,14 +75,16 @@ def disk(V, F, *, mode: str = "certified", border: Optional[str] = None, init: s
     report as ``.report``) when the flow fails.
     """
     return _core.disk(V, F, mode=mode, border=border, init=init, density=density, tolerance=tolerance,
-                      max_iterations=max_iterations, mu=mu, share_tolerance=share_tolerance, outer_loop=outer_loop,
+                      init_uv=init_uv, max_iterations=max_iterations, mu=mu, share_tolerance=share_tolerance,
+                      fixed_step=fixed_step, threshold=threshold, outer_loop=outer_loop,
                       literal_targets=literal_targets, delaunay_flips=delaunay_flips, history=history,
                       callback=callback, name=name)
 
 
 def sphere(V, F, *, mode: str = "certified", density=None, tolerance: Optional[float] = None,
            log_area_tolerance: Optional[float] = None, max_iterations: Optional[int] = None,
-           mu: Optional[float] = None, share_tolerance: Optional[float] = None, literal_targets: bool = False,
+           mu: Optional[float] = None, share_tolerance: Optional[float] = None, fixed_step: Optional[float] = None,
+           threshold: Optional[float] = None, literal_targets: bool = False,
            delaunay_flips: bool = True, history: bool = False, start: str = "tutte", init_map=None,
            callback: Optional[Callable[[Dict[str, Any]], Optional[bool]]] = None,
            name: str = "mesh") -> Tuple[Any, Dict[str, Any]]:
@@ -92,7 +103,8 @@ def sphere(V, F, *, mode: str = "certified", density=None, tolerance: Optional[f
     """
     return _core.sphere(V, F, mode=mode, density=density, tolerance=tolerance,
                         log_area_tolerance=log_area_tolerance, max_iterations=max_iterations, mu=mu,
-                        share_tolerance=share_tolerance, literal_targets=literal_targets,
+                        share_tolerance=share_tolerance, fixed_step=fixed_step, threshold=threshold,
+                        literal_targets=literal_targets,
                         delaunay_flips=delaunay_flips, history=history, start=start, init_map=init_map,
                         callback=callback, name=name)
 

@@ -126,6 +126,68 @@ def test_sphere_starts(tmp_path, ball):
         dlf.sphere(V, F, init_map=points, start="conformal")
 
 
+def test_init_uv_matches_tool(tmp_path, nefertiti):
+    V, F = nefertiti
+    run_tool("disk", mesh_path("nefertiti.off"), "-o", str(tmp_path / "m.obj"), "-q")
+    start = read_obj(tmp_path / "m.obj", "vt")
+    # A start away from the result: the tool's map squeezed along y, still fold-free.
+    start = start * np.array([1.0, 0.5])
+    lines = (tmp_path / "m.obj").read_text().splitlines()
+    k = iter(start)
+    with open(tmp_path / "s.obj", "w") as f:
+        for line in lines:
+            if line.startswith("vt "):
+                u, v = next(k)
+                line = "vt %r %r" % (float(u), float(v))
+            f.write(line + "\n")
+    run_tool("disk", mesh_path("nefertiti.off"), "--init-uv", str(tmp_path / "s.obj"), "-o", str(tmp_path / "o.obj"),
+             "--report", str(tmp_path / "r.json"), "-q")
+    before = start.copy()
+    uv, report = dlf.disk(V, F, init_uv=start)
+    assert np.array_equal(start, before)  # the caller's array is only read
+    assert np.array_equal(uv, read_obj(tmp_path / "o.obj", "vt"))
+    same_report(report, json.loads((tmp_path / "r.json").read_text()))
+    assert report["init"] == "uv" and report["final"]["inverted_faces"] == 0
+    folded = start.copy()
+    folded[[F[0][0], F[0][1]]] = folded[[F[0][1], F[0][0]]]
+    with pytest.raises(dlf.FlowError, match="ERROR_INITIAL_MAP_FOLDED: .* first: face 0 "):
+        dlf.disk(V, F, init_uv=folded)  # as the tool: exit 2, the start named
+    with pytest.raises(ValueError, match="init_uv and init exclude each other"):
+        dlf.disk(V, F, init_uv=start, init="mvc")
+    with pytest.raises(ValueError, match="border=\"free\" only"):
+        dlf.disk(V, F, init_uv=start, border="circle")
+    with pytest.raises(ValueError, match=r"init_uv must have shape \(%d, 2\)" % len(V)):
+        dlf.disk(V, F, init_uv=start[:-1])
+    bad = start.copy()
+    bad[3, 1] = np.nan
+    with pytest.raises(ValueError, match="init_uv: row 3 is not finite"):
+        dlf.disk(V, F, init_uv=bad)
+
+
+@pytest.mark.parametrize("options", [{"mode": "literal", "threshold": 1e-4}, {"fixed_step": 0.05, "max_iterations": 6},
+                                     {"mode": "literal", "fixed_step": 0.01, "max_iterations": 6}])
+def test_step_options_match_tool(tmp_path, nefertiti, options):
+    V, F = nefertiti
+    try:
+        uv, report = dlf.disk(V, F, **options)
+    except dlf.FlowError as e:  # a documented failure of the literal flow: the tool must fail alike
+        uv, report = None, e.report
+    args = []
+    for k, v in options.items():
+        args += ["--" + k.replace("_", "-"), str(v)]
+    code = subprocess.run([DLF, "disk", mesh_path("nefertiti.off"), *args, "-o", str(tmp_path / "m.obj"),
+                           "--report", str(tmp_path / "r.json"), "-q"], capture_output=True).returncode
+    same_report(report, json.loads((tmp_path / "r.json").read_text()))
+    if uv is None:
+        assert code == 2
+    else:
+        assert code in (0, 3)
+        assert np.array_equal(uv, read_obj(tmp_path / "m.obj", "vt"))
+    for key in ("fixed_step", "threshold"):
+        if key in options:
+            assert report["options"][key] == options[key]
+
+
 def test_density_matches_tool(tmp_path, nefertiti):
     V, F = nefertiti
     density = 1.0 + (V[:, 0] > np.median(V[:, 0]))  # per vertex: 2 on one half
