@@ -743,6 +743,42 @@ for ext in off obj; do
 done
 check "no temporaries left (seams)" no_temporaries
 
+# --- volume --------------------------------------------------------------------
+"$DLF" tetrahedralize "$MESHES/sphere.off" -o vol_sphere.mesh --tets 2000 -q
+check "tetrahedralize sphere.off: exit 0" equals "$?" 0
+check "tetrahedralize: a Tetrahedra section" grep -q '^Tetrahedra' vol_sphere.mesh
+"$DLF" volume vol_sphere.mesh -o vol_ball.mesh --report vol.json --svg vol.svg -q 2> vol.err
+check "volume: exit 0" equals "$?" 0
+check "volume report: status ok, converged, start certified, 0 inverted tets" equals \
+  "$(json_get vol.json "" status) $(json_get vol.json "" stop_reason) $(json_get vol.json start certified) $(json_get vol.json final inverted_tets)" \
+  "ok converged true 0"
+check "volume: d_vol <= 2.01" number_is "$(json_get vol.json final d_vol)" "<=" 2.01
+check "volume: the output keeps the tetrahedra" equals "$(sed -n '/^Tetrahedra/{n;p}' vol_ball.mesh)" "$(sed -n '/^Tetrahedra/{n;p}' vol_sphere.mesh)"
+check "volume: border vertices on the unit sphere, all inside the ball (recomputed)" /usr/bin/python3 - vol_ball.mesh <<'PY'
+import math, sys
+t = [l.split() for l in open(sys.argv[1])]
+i = next(k for k, l in enumerate(t) if l == ["Vertices"]); n = int(t[i + 1][0])
+p = [tuple(map(float, l[:3])) for l in t[i + 2:i + 2 + n]]
+j = next(k for k, l in enumerate(t) if l == ["Triangles"]); m = int(t[j + 1][0])
+border = {int(v) - 1 for l in t[j + 2:j + 2 + m] for v in l[:3]}
+r = [math.sqrt(sum(c * c for c in q)) for q in p]
+sys.exit(not (all(abs(r[v] - 1) < 1e-12 for v in border) and all(x <= 1 + 1e-12 for x in r) and len(border) > 0))
+PY
+check "volume --svg: an SVG picture" grep -q '<svg' vol.svg
+"$DLF" volume vol_sphere.mesh --roi-ball 0 0 0.5 0.5 --factor 4 --report vol_roi.json -q
+check "volume --roi-ball x4: exit 0, region within 1% of its share" equals \
+  "$? $(/usr/bin/python3 -c "import json; r = json.load(open('vol_roi.json'))['roi']; print(abs(r['relative_error']) <= 0.01)")" "0 True"
+printf 'MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\nTetrahedra\n1\n1 2 4 3 1\nEnd\n' > vol_inverted.mesh
+"$DLF" volume vol_inverted.mesh 2> vol_inverted.err
+check "volume: an inverted tet is bad input (exit 1), named" equals \
+  "$? $(grep -c 'tetrahedron 0 is inverted' vol_inverted.err)" "1 1"
+printf 'MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\nTetrahedra\n1\n1 2 3 9 1\nEnd\n' > vol_range.mesh
+"$DLF" volume vol_range.mesh 2> vol_range.err
+check "volume: a parse error names the line (exit 1)" equals "$? $(grep -c 'line 11: tetrahedron 1 of 1 refers to vertex 9' vol_range.err)" "1 1"
+"$DLF" tetrahedralize "$MESHES/3torus.off" -o vol_torus.mesh 2> vol_torus.err
+check "tetrahedralize: a surface of genus 3 is refused (exit 1)" equals "$? $(grep -c 'Euler characteristic' vol_torus.err)" "1 1"
+check "no temporaries left (volume)" no_temporaries
+
 echo
 if [ "$failures" -ne 0 ]; then
   echo "$failures of $checks checks FAILED"

@@ -18,6 +18,7 @@
 
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <random>
 #include <sstream>
 #include <string>
@@ -138,7 +139,7 @@ long double check_ball_map(const Tet_mesh& m, const std::vector<Point>& x, const
 
 TEST(Volume, CubeGridIntoBallIsCertifiedAndVolumePreserving)
 {
-  const Tet_mesh m = full_grid(4, 0.2);
+  const Tet_mesh m = full_grid(6, 0.2);
   SMP::Discrete_lie_flow_volume_parameterizer_3<> dlf;
   std::vector<Point> x;
   ASSERT_EQ(dlf.parameterize(m.points, m.tets, x), SMP::OK) << dlf.report().message;
@@ -148,21 +149,28 @@ TEST(Volume, CubeGridIntoBallIsCertifiedAndVolumePreserving)
   EXPECT_EQ(R.inverted_tets, 0u);
   EXPECT_EQ(R.flat_tets, 0u);
   EXPECT_EQ(R.tets, m.tets.size());
-  EXPECT_EQ(R.border_vertices, std::size_t(6 * 16 + 2));
+  EXPECT_EQ(R.border_vertices, std::size_t(6 * 36 + 2));
   const long double d = check_ball_map(m, x, {}, R);
   EXPECT_LE(d, 2.01L);
   EXPECT_LT(R.final_d_vol, R.initial_d_vol);
 }
 
-TEST(Volume, ImageVolumeApproachesTheBallAsTheBorderIsRefined)
+TEST(Volume, StarShapedImageVolumeApproachesTheBallAsTheBorderIsRefined)
 {
+  // With the border kept star-shaped the image is a polytope inscribed in
+  // the sphere whose border the centre sees once: its volume grows towards
+  // the ball's as the border is refined.
   double previous = 0;
   for(int n : { 2, 3, 5 }) {
     const Tet_mesh m = full_grid(n);
-    SMP::Discrete_lie_flow_volume_parameterizer_3<> dlf;
+    SMP::Discrete_lie_flow_volume_options o;
+    o.star_shaped_border = true;
+    SMP::Discrete_lie_flow_volume_parameterizer_3<> dlf(o);
     std::vector<Point> x;
     ASSERT_EQ(dlf.parameterize(m.points, m.tets, x), SMP::OK) << dlf.report().message;
     check_ball_map(m, x, {}, dlf.report());
+    EXPECT_EQ(dlf.report().inverted_border_faces, 0u);
+    EXPECT_LT(dlf.report().final_d_vol, dlf.report().initial_d_vol);
     EXPECT_GT(dlf.report().volume, previous) << n;
     previous = dlf.report().volume;
   }
@@ -170,25 +178,46 @@ TEST(Volume, ImageVolumeApproachesTheBallAsTheBorderIsRefined)
   EXPECT_LT(ball - previous, 0.1 * ball);
 }
 
-TEST(Volume, DensityRegionsGetTheirShares)
+/// The Mesh_3 tetrahedral mesh of CGAL's sphere.off in test/data.
+Tet_mesh sphere_mesh()
 {
-  const Tet_mesh m = full_grid(4);
-  for(double factor : { 4., 0.25 }) {
+  std::ifstream in(std::string(DLF_TEST_DATA_DIR) + "/sphere_tets.mesh");
+  D::Medit_tet_mesh medit;
+  std::string error;
+  EXPECT_TRUE(D::read_medit(in, medit, error)) << error;
+  Tet_mesh m;
+  for(const auto& p : medit.points) m.points.emplace_back(p[0], p[1], p[2]);
+  m.tets = medit.tets;
+  return m;
+}
+
+TEST(Volume, Mesh3SphereIsVolumePreservingAndRegionsGetTheirShares)
+{
+  const Tet_mesh m = sphere_mesh();
+  ASSERT_GT(m.tets.size(), 1000u);
+  for(double factor : { 1., 4., 0.25 }) {
+    // The region: the tets whose centroid lies in the ball of radius 0.5 around (0, 0, 0.5).
     std::vector<double> rho(m.tets.size(), 1.);
-    long double in = 0, all = 0;
     for(std::size_t t = 0; t < m.tets.size(); ++t) {
-      double cx = 0;
-      for(int v : m.tets[t]) cx += m.points[std::size_t(v)].x() / 4;
-      if(cx < 1.5) rho[t] = factor;
+      double c[3] = { 0, 0, 0 };
+      for(int v : m.tets[t]) {
+        c[0] += m.points[std::size_t(v)].x() / 4;
+        c[1] += m.points[std::size_t(v)].y() / 4;
+        c[2] += m.points[std::size_t(v)].z() / 4;
+      }
+      if(c[0] * c[0] + c[1] * c[1] + (c[2] - 0.5) * (c[2] - 0.5) < 0.25) rho[t] = factor;
     }
     SMP::Discrete_lie_flow_volume_options options;
-    options.tet_density = rho;
+    if(factor != 1.) options.tet_density = rho;
     SMP::Discrete_lie_flow_volume_parameterizer_3<> dlf(options);
     std::vector<Point> x;
     ASSERT_EQ(dlf.parameterize(m.points, m.tets, x), SMP::OK) << dlf.report().message;
-    EXPECT_TRUE(dlf.report().converged());
-    check_ball_map(m, x, rho, dlf.report());
-    long double target_in = 0, target_all = 0;
+    EXPECT_TRUE(dlf.report().converged()) << factor;
+    EXPECT_TRUE(dlf.report().start_certified);
+    const long double d = check_ball_map(m, x, factor != 1. ? rho : std::vector<double>(), dlf.report());
+    EXPECT_LE(d, 2.01L);
+    if(factor == 1.) continue;
+    long double in = 0, all = 0, target_in = 0, target_all = 0;
     for(std::size_t t = 0; t < m.tets.size(); ++t) {
       const auto& k = m.tets[t];
       const long double u = det6(x[std::size_t(k[0])], x[std::size_t(k[1])], x[std::size_t(k[2])], x[std::size_t(k[3])]);

@@ -134,8 +134,8 @@ int tetrahedralize_command(const std::vector<std::string>& args)
   Mesh_criteria criteria(params::facet_angle = 25, params::facet_size = s, params::facet_distance = 0.05 * s,
                          params::cell_radius_edge_ratio = 3, params::cell_size = s);
   C3t3 c3t3 = vm.count("no-optimize")
-    ? CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude())
-    : CGAL::make_mesh_3<C3t3>(domain, criteria);
+    ? CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude(), params::manifold())
+    : CGAL::make_mesh_3<C3t3>(domain, criteria, params::manifold());
   // The cells of the complex, their vertices numbered in order of appearance.
   std::map<Tr::Vertex_handle, int> index;
   std::vector<D::Vec3> points;

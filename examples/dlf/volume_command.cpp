@@ -122,16 +122,22 @@ int volume_command(const std::vector<std::string>& args)
     ("report", po::value<std::string>(&report_path)->value_name("R.json"), "JSON report")
     ("svg", po::value<std::string>(&svg_path)->value_name("VIEW.svg"),
      "the ball's border from +z and -z, each triangle coloured by the log volume ratio of its tetrahedron")
-    ("tolerance", po::value<double>(&options.tolerance), "stop when D_vol - 2 <= this (default 0.01)")
+    ("tolerance", po::value<double>(&options.tolerance), "stop when D_vol - 2 <= this (default 0.01) ...")
+    ("share-tolerance", po::value<double>(&options.share_tolerance),
+     "... and, with a density, the tetrahedra of every density value within this of their share, relative "
+     "(default 0.005; 0: no such test)")
     ("max-iterations", po::value<std::size_t>(&options.max_iterations), "iteration cap (default 300)")
     ("mu", po::value<double>(&options.mu), "fraction of the critical step, in (0, 1) (default 0.8)")
+    ("cg-iterations", po::value<std::size_t>(&options.cg_max_iterations),
+     "conjugate-gradient cap of each Gauss-Newton solve (default 200)")
     ("density", po::value<std::string>(&density_file)->value_name("FILE"),
      "measure control: one density > 0 per tetrahedron, in file order")
     ("roi-ball", po::value<std::vector<double> >()->multitoken()->value_name("X Y Z R"),
      "a region of interest: the tetrahedra whose centroid lies in this ball (input coordinates); needs --factor")
     ("factor", po::value<double>()->value_name("F"), "density of the region (> 0)")
-    ("not-star-shaped", "let border triangles turn away from the centre (only the tets stay positive; "
-     "the report counts such triangles): lower D_vol, injectivity certified only locally")
+    ("star-shaped", "keep every border triangle positive seen from the centre during the flow: with the "
+     "positive tetrahedra a certificate of bijectivity, at a higher D_vol on meshes with protrusions "
+     "(by default only the tetrahedra constrain the flow; the report counts such border triangles)")
     ("history", "per-iteration history in the report")
     ("quiet,q", "print nothing on success")
     ("verbose,v", "one progress line per iteration");
@@ -172,7 +178,7 @@ int volume_command(const std::vector<std::string>& args)
   }
   if(has_roi && !density_file.empty()) throw Cli_error("--density and --roi-ball exclude each other");
   options.record_history = vm.count("history") != 0;
-  options.star_shaped_border = vm.count("not-star-shaped") == 0;
+  options.star_shaped_border = vm.count("star-shaped") != 0;
   Output_files files;
   if(!output.empty()) files.declare(output, "-o");
   if(!report_path.empty()) files.declare(report_path, "--report");
@@ -239,7 +245,13 @@ int volume_command(const std::vector<std::string>& args)
     mesh.tets, ball);
   if(in_place && !quiet) std::printf("\n");
   const SMP::Discrete_lie_flow_volume_report& R = dlf.report();
-  if(code != SMP::OK) throw Cli_error(input + ": " + R.message, EXIT_FLOW_ERROR);
+  if(code != SMP::OK) {
+    // The input's faults are bad input; a start that cannot be certified is the flow's.
+    const bool bad_input = code == SMP::ERROR_EMPTY_MESH || code == SMP::ERROR_WRONG_PARAMETER ||
+                           code == SMP::ERROR_NO_TOPOLOGICAL_BALL || code == int(SMP::ERROR_DEGENERATE_INPUT) ||
+                           code == int(SMP::ERROR_INVALID_DENSITY);
+    throw Cli_error(input + ": " + R.message, bad_input ? EXIT_BAD_INPUT : EXIT_FLOW_ERROR);
+  }
   std::vector<D::Vec3> x(ball.size());
   for(std::size_t i = 0; i < ball.size(); ++i) x[i] = {{ ball[i].a, ball[i].b, ball[i].c }};
   D::Ball_topology topo;
@@ -295,7 +307,7 @@ int volume_command(const std::vector<std::string>& args)
     if(has_roi)
       j["roi"] = { { "ball", roi.ball }, { "factor", roi.factor }, { "target_share", roi_target },
                    { "achieved_share", roi_achieved }, { "relative_error", roi_achieved / roi_target - 1 } };
-    j["options"] = { { "tolerance", options.tolerance }, { "max_iterations", options.max_iterations }, { "mu", options.mu } };
+    j["options"] = { { "tolerance", options.tolerance }, { "share_tolerance", options.share_tolerance }, { "max_iterations", options.max_iterations }, { "mu", options.mu } };
     j["counters"] = { { "rejected_by_exact_check", R.rejected_by_exact_check }, { "cg_iterations", R.cg_iterations } };
     j["seconds"] = { { "border", R.seconds_border }, { "interior", R.seconds_interior }, { "untangle", R.seconds_untangle },
                      { "flow", R.seconds_flow }, { "total", R.seconds_total } };

@@ -36,15 +36,21 @@ struct Discrete_lie_flow_volume_options
   double mu = 0.8;                  ///< fraction of the critical step, in (0, 1)
   std::size_t cg_max_iterations = 200; ///< conjugate-gradient cap of each Gauss–Newton solve
   std::size_t untangle_max_iterations = 3000; ///< iteration cap of the start's untangling
-  /// Keep the border star-shaped: every border triangle positive seen from
-  /// the centre, besides every tet positive. Both together certify that the
-  /// map is a bijection onto its image; positive tets alone certify local
-  /// injectivity. Off: only the tets constrain the flow (lower D_vol on some
-  /// meshes), and the report counts the border triangles seen reversed.
-  bool star_shaped_border = true;
+  /// Keep the border star-shaped during the flow: every border triangle
+  /// positive seen from the centre, besides every tet positive; both
+  /// together certify that the map is a bijection onto its image (the
+  /// start always is). Off (the default): only the tets constrain the flow,
+  /// which reaches a far lower D_vol on meshes with protrusions, and the
+  /// report counts the border triangles seen reversed
+  /// (`inverted_border_faces`; 0 again certifies the bijection).
+  bool star_shaped_border = false;
   /// Per-tet density ρ > 0 (empty: 1): a tet's share of the ball is
   /// proportional to ρ × its volume.
   std::vector<double> tet_density;
+  /// With a density: converged also needs the tets of every density value
+  /// (up to 32 values) to hold their share of the volume within this,
+  /// relative (0: D_vol alone decides).
+  double share_tolerance = 0.005;
   /// Settings of the spherical map of the border (the start).
   Discrete_lie_flow_options border;
   bool record_history = false;
@@ -258,10 +264,56 @@ private:
     S.mu = O.mu;
     S.cg_max_iterations = O.cg_max_iterations;
     S.star_shaped_border = O.star_shaped_border;
-    S.callback = O.callback;
+    S.share_tolerance = O.share_tolerance;
+    if(!O.tet_density.empty() && O.share_tolerance > 0) {
+      std::map<double, int> ids;
+      for(double rho : O.tet_density) {
+        if(ids.size() > 32) break;
+        ids.emplace(rho, int(ids.size()));
+      }
+      if(ids.size() <= 32 && ids.size() > 1) {
+        S.level.resize(tets.size());
+        S.level_share.assign(ids.size(), 0.);
+        double Tsum = 0;
+        for(std::size_t t = 0; t < tets.size(); ++t) {
+          S.level[t] = ids[O.tet_density[t]];
+          S.level_share[std::size_t(S.level[t])] += target[t];
+          Tsum += target[t];
+        }
+        for(double& a : S.level_share) a /= Tsum;
+      }
+    }
     const Clock::time_point t_flow = Clock::now();
-    const D::Volume_flow_outcome out = D::run_volume_flow(x, tets, topo.on_border, topo.border_faces, target, 0, S,
+    // With density levels: where D_vol's minimum leaves a level short of its
+    // share (its tets at the border cannot all reach their volumes), the
+    // level's targets are scaled by prescribed/achieved and the flow runs
+    // again from there (at most 6 rounds); D_vol is always reported against
+    // the prescribed targets.
+    std::vector<double> flow_target = target;
+    D::Volume_flow_outcome out;
+    for(int round = 0;; ++round) {
+      const D::Volume_flow_outcome o = D::run_volume_flow(x, tets, topo.on_border, topo.border_faces, flow_target, 0, S,
                                                           O.record_history ? &R.history : nullptr);
+      out.iterations += o.iterations;
+      out.rejected_by_exact_check += o.rejected_by_exact_check;
+      out.cg_iterations += o.cg_iterations;
+      out.stop_reason = o.stop_reason;
+      if(S.level.empty() || round >= 5 || o.stop_reason == Discrete_lie_flow_stop_reason::CONVERGED ||
+         o.stop_reason == Discrete_lie_flow_stop_reason::INTERRUPTED)
+        break;
+      std::vector<double> achieved;
+      D::tet_dets(x, tets, u);
+      if(D::level_share_error(S.level, S.level_share, u, &achieved) <= S.share_tolerance) break;
+      for(std::size_t t = 0; t < tets.size(); ++t) {
+        const std::size_t k = std::size_t(S.level[t]);
+        flow_target[t] *= S.level_share[k] / achieved[k];
+      }
+    }
+    // Converged: D_vol against the prescribed targets, and the shares.
+    D::tet_dets(x, tets, u);
+    if(out.stop_reason == Discrete_lie_flow_stop_reason::CONVERGED &&
+       !(energy.value(u, 0) - 2 <= O.tolerance && D::level_share_error(S.level, S.level_share, u) <= S.share_tolerance))
+      out.stop_reason = Discrete_lie_flow_stop_reason::PLATEAU;
     R.seconds_flow = std::chrono::duration<double>(Clock::now() - t_flow).count();
     R.stop_reason = out.stop_reason;
     R.iterations = out.iterations;
@@ -311,7 +363,8 @@ private:
                                            " tetrahedra and " + std::to_string(R.inverted_border_faces) +
                                            " border triangles not positive");
     R.status = OK;
-    R.message = R.converged() ? "Success" : "valid and fold-free, but D_vol - 2 is above the tolerance";
+    R.message = R.converged() ? "Success"
+                              : "valid and fold-free, but D_vol - 2 or a density level's share is above its tolerance";
     return OK;
   }
 

@@ -80,7 +80,31 @@ struct Volume_flow_settings
   /// star-shaped border: with positive tets, a certificate of bijectivity).
   bool star_shaped_border = true;
   std::function<bool(const Volume_iteration&)> callback; ///< false: stop (INTERRUPTED)
+  /// Measure control: the level (0, 1, ...) of every tet (empty: none);
+  /// converged also needs every level's share of the volume within
+  /// `share_tolerance` of its prescribed share, relative.
+  std::vector<int> level;
+  std::vector<double> level_share; ///< the prescribed share of every level
+  double share_tolerance = 0.005;
 };
+
+/// The largest relative error of the levels' shares, |achieved/prescribed − 1|;
+/// `achieved` receives the achieved shares.
+inline double level_share_error(const std::vector<int>& level, const std::vector<double>& prescribed,
+                                const std::vector<double>& u, std::vector<double>* achieved = nullptr)
+{
+  if(level.empty()) return 0;
+  std::vector<double> a(prescribed.size(), 0.);
+  double A = 0;
+  for(std::size_t t = 0; t < u.size(); ++t) { a[std::size_t(level[t])] += u[t]; A += u[t]; }
+  double e = 0;
+  for(std::size_t k = 0; k < a.size(); ++k) {
+    a[k] /= A;
+    if(prescribed[k] > 0) e = (std::max)(e, std::abs(a[k] / prescribed[k] - 1));
+  }
+  if(achieved) achieved->swap(a);
+  return e;
+}
 
 /// The engine's outcome.
 struct Volume_flow_outcome
@@ -340,7 +364,7 @@ inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vect
         out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED;
         break;
       }
-    } else if(E - 2 <= S.tolerance) {
+    } else if(E - 2 <= S.tolerance && level_share_error(S.level, S.level_share, u) <= S.share_tolerance) {
       out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED;
       break;
     }

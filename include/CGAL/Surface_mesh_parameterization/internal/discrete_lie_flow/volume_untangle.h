@@ -39,15 +39,16 @@ struct Untangle_outcome
   std::size_t iterations = 0, rounds = 0;
 };
 
-/// Untangles `x` (see the file comment). `reference`: the input positions;
-/// `target`: the tets' target weights. Returns success when every tet and
-/// border triangle is positive (exact).
-inline Untangle_outcome untangle_volume(std::vector<Vec3>& x, const std::vector<Tet>& tets,
-                                        const std::vector<char>& on_border,
-                                        const std::vector<std::array<int, 3> >& border_faces,
-                                        const std::vector<Vec3>& reference, const std::vector<double>& target,
-                                        std::size_t max_iterations,
-                                        const std::function<bool(const Volume_iteration&)>& callback)
+/// The untangling on tets `tets` (the first `real_tets` are the mesh's,
+/// the others cone tets on the fixed centre vertex, whose reference shape is
+/// taken from `cone_reference`).
+inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::vector<Tet>& tets, std::size_t real_tets,
+                                             const std::vector<char>& on_border,
+                                             const std::vector<std::array<int, 3> >& border_faces,
+                                             const std::vector<Vec3>& reference,
+                                             const std::vector<Vec3>& cone_reference, const std::vector<double>& target,
+                                             std::size_t max_iterations,
+                                             const std::function<bool(const Volume_iteration&)>& callback)
 {
   typedef std::chrono::steady_clock Clock;
   const Clock::time_point start = Clock::now();
@@ -61,13 +62,15 @@ inline Untangle_outcome untangle_volume(std::vector<Vec3>& x, const std::vector<
     double U = 0, Tsum = 0;
     std::vector<double> u;
     tet_dets(x, tets, u);
-    for(std::size_t t = 0; t < T; ++t) { U += u[t]; Tsum += target[t]; }
+    for(std::size_t t = 0; t < real_tets; ++t) U += u[t];
+    for(std::size_t t = 0; t < T; ++t) Tsum += target[t];
     for(std::size_t t = 0; t < T; ++t) {
       const Tet& k = tets[t];
+      const std::vector<Vec3>& P = t < real_tets ? reference : cone_reference;
       Eigen::Matrix3d R;
       for(int j = 0; j < 3; ++j)
         for(int c = 0; c < 3; ++c)
-          R(c, j) = reference[std::size_t(k[std::size_t(j + 1)])][std::size_t(c)] - reference[std::size_t(k[0])][std::size_t(c)];
+          R(c, j) = P[std::size_t(k[std::size_t(j + 1)])][std::size_t(c)] - P[std::size_t(k[0])][std::size_t(c)];
       const double share = target[t] / Tsum;
       const double s = std::cbrt(share * U / R.determinant());
       A[t] = (s * R).inverse();
@@ -117,7 +120,9 @@ inline Untangle_outcome untangle_volume(std::vector<Vec3>& x, const std::vector<
   };
   auto project = [&](const std::vector<Vec3>& y, std::vector<Vec3>& g) {
     for(std::size_t v = 0; v < V; ++v)
-      if(on_border[v]) {
+      if(on_border[v] == 2) {
+        g[v] = {{ 0, 0, 0 }};
+      } else if(on_border[v]) {
         const Vec3 n = normalized(y[v]);
         const double k = dot(g[v], n);
         for(int c = 0; c < 3; ++c) g[v][std::size_t(c)] -= k * n[std::size_t(c)];
@@ -130,17 +135,22 @@ inline Untangle_outcome untangle_volume(std::vector<Vec3>& x, const std::vector<
   };
   auto certified = [&](const std::vector<Vec3>& y) {
     for(double d : dets) if(!(d > 0)) return false;
-    return count_bad_tets(y, tets).not_positive() == 0 && count_bad_border_faces(y, border_faces) == 0;
+    return count_bad_tets(y, tets).not_positive() == 0;
   };
+  (void)border_faces; // in `tets` as cone tets
   std::vector<Vec3> g, g_new, dir, y(V);
   double E = evaluate(x, 1, nullptr); // fills dets
   double dmin = *std::min_element(dets.begin(), dets.end());
   const double mu0 = 0.1;
-  // ε at most 1 (the target determinant): far above it the energy no
-  // longer sees the volumes, and with the border sliding the shape term
-  // alone would shrink the whole map.
-  double eps = (std::min)(1., dmin < mu0 ? 2 * std::sqrt(mu0 * (mu0 - dmin)) : 1e-3);
+  // ε at most a tenth of the target determinant (1): with a larger ε the
+  // energy hardly sees the small determinants, and the shape term, which
+  // rewards shrinking, pushes the tets that are too small through zero.
+  double eps = (std::min)(0.1, dmin < mu0 ? 2 * std::sqrt(mu0 * (mu0 - dmin)) : 1e-3);
+  bool polishing = false;
+  std::size_t polished = 0;
+  std::vector<Vec3> certified_x;
   while(out.iterations < max_iterations) {
+    if(polishing) break;
     ++out.rounds;
     E = evaluate(x, eps, &g);
     project(x, g);
@@ -185,7 +195,7 @@ inline Untangle_outcome untangle_volume(std::vector<Vec3>& x, const std::vector<
       for(int tries = 0; tries < 40; ++tries, step *= 0.5) {
         for(std::size_t v = 0; v < V; ++v) {
           const Vec3 p = {{ x[v][0] + step * dir[v][0], x[v][1] + step * dir[v][1], x[v][2] + step * dir[v][2] }};
-          y[v] = on_border[v] ? normalized(p) : p;
+          y[v] = on_border[v] == 1 ? normalized(p) : p;
         }
         E_new = evaluate(y, eps, &g_new);
         if(E_new <= E + 1e-4 * step * slope) { ok = true; break; }
@@ -218,7 +228,24 @@ inline Untangle_outcome untangle_volume(std::vector<Vec3>& x, const std::vector<
         I.seconds = std::chrono::duration<double>(Clock::now() - start).count();
         if(!callback(I)) return out;
       }
-      if(negative == 0 && certified(x)) { out.success = true; return out; }
+      if(polishing) {
+        if(out.iterations % 10 == 0 && certified(x)) certified_x = x;
+        if(drop < 1e-5 || ++polished >= 200) break;
+        continue;
+      }
+      if(negative == 0 && certified(x)) {
+        // Untangled. Then the pure barrier (ε = 0) from there for a while:
+        // it moves every tet and border triangle away from flat, which
+        // leaves the flow room to move.
+        out.success = true;
+        certified_x = x;
+        polishing = true;
+        eps = 0;
+        E = evaluate(x, eps, &g);
+        project(x, g);
+        memory.clear();
+        continue;
+      }
       if(drop < 1e-6) break;
     }
     // The next ε.
@@ -226,10 +253,52 @@ inline Untangle_outcome untangle_volume(std::vector<Vec3>& x, const std::vector<
     dmin = *std::min_element(dets.begin(), dets.end());
     const double sigma = (std::max)(0.1, 1 - E / E_round);
     const double mu = (1 - sigma) * Volume_energy::chi(dmin, eps);
-    eps = (std::min)(1., dmin < mu ? 2 * std::sqrt(mu * (mu - dmin)) : 1e-10);
+    eps = (std::min)(0.1, dmin < mu ? 2 * std::sqrt(mu * (mu - dmin)) : 1e-10);
+    if(polishing) break;
     if(dmin > 0 && certified(x)) { out.success = true; return out; }
   }
+  if(polishing) {
+    if(certified(x)) certified_x = x;
+    x.swap(certified_x);
+    return out;
+  }
   out.success = certified(x);
+  return out;
+}
+
+/// Untangles `x` (see the file comment). `reference`: the input positions;
+/// `target`: the tets' target weights. Returns success when every tet and
+/// border triangle is positive (exact).
+inline Untangle_outcome untangle_volume(std::vector<Vec3>& x, const std::vector<Tet>& tets,
+                                        const std::vector<char>& on_border,
+                                        const std::vector<std::array<int, 3> >& border_faces,
+                                        const std::vector<Vec3>& reference, const std::vector<double>& target,
+                                        std::size_t max_iterations,
+                                        const std::function<bool(const Volume_iteration&)>& callback)
+{
+  // The border triangles enter as cone tets (O, a, b, c) on a fixed vertex
+  // at the centre: their barrier keeps the border star-shaped. Their
+  // reference is the start (the spherical map, positive), their weight a
+  // small share.
+  const std::size_t V0 = x.size(), T0 = tets.size();
+  std::vector<Vec3> xe(x), refe(reference);
+  std::vector<char> kind(on_border); // 0 interior, 1 border (slides), 2 fixed
+  std::vector<Tet> te(tets);
+  std::vector<double> ge(target);
+  double Tsum = 0;
+  for(double a : target) Tsum += a;
+  xe.push_back({{ 0, 0, 0 }});
+  kind.push_back(2);
+  std::vector<Vec3> cone_reference(x);
+  cone_reference.push_back({{ 0, 0, 0 }});
+  for(const auto& f : border_faces) {
+    te.push_back({{ int(V0), f[0], f[1], f[2] }});
+    ge.push_back(0.1 * Tsum / double(border_faces.size()));
+  }
+  Untangle_outcome out = untangle_volume_impl(xe, te, T0, kind, border_faces, reference, cone_reference, ge,
+                                              max_iterations, callback);
+  xe.pop_back();
+  x.swap(xe);
   return out;
 }
 
