@@ -65,7 +65,7 @@ int tetrahedralize_command(const std::vector<std::string>& args)
     ("help,h", "this help")
     ("output,o", po::value<std::string>(&output), "the Medit .mesh to write")
     ("tets", po::value<std::size_t>(&target_tets)->value_name("N"),
-     "aim at about N tetrahedra (the size is derived from the solid's volume; default 10000)")
+     "a size bound derived from N and the solid's volume (default 10000; Mesh_3 makes about 0.4 to 0.7 N tetrahedra on CGAL's meshes)")
     ("size", po::value<double>(&size)->value_name("S"),
      "the tetrahedra's size bound as a fraction of the bounding box's diagonal (instead of --tets)")
     ("no-optimize", "skip the sliver perturbation and exudation (faster, worse tetrahedra)")

@@ -129,7 +129,7 @@ int volume_command(const std::vector<std::string>& args)
     ("max-iterations", po::value<std::size_t>(&options.max_iterations), "iteration cap (default 300)")
     ("mu", po::value<double>(&options.mu), "fraction of the critical step, in (0, 1) (default 0.8)")
     ("cg-iterations", po::value<std::size_t>(&options.cg_max_iterations),
-     "conjugate-gradient cap of each Gauss-Newton solve (default 200)")
+     "conjugate-gradient cap of each Gauss-Newton solve (default 60)")
     ("density", po::value<std::string>(&density_file)->value_name("FILE"),
      "measure control: one density > 0 per tetrahedron, in file order")
     ("roi-ball", po::value<std::vector<double> >()->multitoken()->value_name("X Y Z R"),

@@ -276,30 +276,91 @@ inline Untangle_outcome untangle_volume(std::vector<Vec3>& x, const std::vector<
                                         std::size_t max_iterations,
                                         const std::function<bool(const Volume_iteration&)>& callback)
 {
-  // The border triangles enter as cone tets (O, a, b, c) on a fixed vertex
-  // at the centre: their barrier keeps the border star-shaped. Their
-  // reference is the start (the spherical map, positive), their weight a
-  // small share.
-  const std::size_t V0 = x.size(), T0 = tets.size();
-  std::vector<Vec3> xe(x), refe(reference);
-  std::vector<char> kind(on_border); // 0 interior, 1 border (slides), 2 fixed
-  std::vector<Tet> te(tets);
-  std::vector<double> ge(target);
+  // Folds are local: the vertices within k rings of a fold move, the rest
+  // stay (k = 3, then 6, 12, then every vertex). The border triangles enter
+  // as cone tets (O, a, b, c) on a fixed vertex at the centre: their
+  // barrier keeps the border star-shaped. Their reference is the start (the
+  // spherical map, positive), their weight a small share.
+  const std::size_t V = x.size(), T = tets.size();
   double Tsum = 0;
   for(double a : target) Tsum += a;
-  xe.push_back({{ 0, 0, 0 }});
-  kind.push_back(2);
-  std::vector<Vec3> cone_reference(x);
-  cone_reference.push_back({{ 0, 0, 0 }});
-  for(const auto& f : border_faces) {
-    te.push_back({{ int(V0), f[0], f[1], f[2] }});
-    ge.push_back(0.1 * Tsum / double(border_faces.size()));
+  const double cone_weight = 0.1 * Tsum / double((std::max)(border_faces.size(), std::size_t(1)));
+  std::vector<std::vector<int> > vertex_tets(V);
+  for(std::size_t t = 0; t < T; ++t)
+    for(int v : tets[t]) vertex_tets[std::size_t(v)].push_back(int(t));
+  Untangle_outcome total;
+  for(int rings : { 3, 6, 12, -1 }) {
+    // The folded tets' and cones' vertices, grown by `rings` rings.
+    std::vector<char> movable(V, 0);
+    std::vector<int> front;
+    const Vec3 o = {{ 0, 0, 0 }};
+    for(const Tet& k : tets)
+      if(exact_tet_orientation(x[std::size_t(k[0])], x[std::size_t(k[1])], x[std::size_t(k[2])], x[std::size_t(k[3])]) != POSITIVE)
+        for(int v : k) if(!movable[std::size_t(v)]) { movable[std::size_t(v)] = 1; front.push_back(v); }
+    for(const auto& f : border_faces)
+      if(exact_tet_orientation(o, x[std::size_t(f[0])], x[std::size_t(f[1])], x[std::size_t(f[2])]) != POSITIVE)
+        for(int v : f) if(!movable[std::size_t(v)]) { movable[std::size_t(v)] = 1; front.push_back(v); }
+    if(front.empty()) { total.success = true; return total; }
+    if(rings < 0) std::fill(movable.begin(), movable.end(), 1);
+    for(int r = 0; r < rings; ++r) {
+      std::vector<int> next;
+      for(int v : front)
+        for(int t : vertex_tets[std::size_t(v)])
+          for(int w : tets[std::size_t(t)])
+            if(!movable[std::size_t(w)]) { movable[std::size_t(w)] = 1; next.push_back(w); }
+      front.swap(next);
+    }
+    // The sub-problem: the tets with a movable vertex, their vertices
+    // (the others fixed), the border triangles with a movable vertex as cones.
+    std::vector<int> local(V, -1), global;
+    std::vector<Tet> te;
+    std::vector<double> ge;
+    std::vector<Vec3> xe, refe, cone_ref;
+    std::vector<char> kind;
+    auto index = [&](int v) {
+      if(local[std::size_t(v)] < 0) {
+        local[std::size_t(v)] = int(global.size());
+        global.push_back(v);
+        xe.push_back(x[std::size_t(v)]);
+        refe.push_back(reference[std::size_t(v)]);
+        kind.push_back(movable[std::size_t(v)] ? char(on_border[std::size_t(v)] ? 1 : 0) : char(2));
+      }
+      return local[std::size_t(v)];
+    };
+    for(std::size_t t = 0; t < T; ++t) {
+      const Tet& k = tets[t];
+      if(!(movable[std::size_t(k[0])] || movable[std::size_t(k[1])] || movable[std::size_t(k[2])] || movable[std::size_t(k[3])]))
+        continue;
+      te.push_back({{ index(k[0]), index(k[1]), index(k[2]), index(k[3]) }});
+      ge.push_back(target[t]);
+    }
+    const std::size_t real_tets = te.size();
+    std::vector<std::array<int, 3> > faces;
+    for(const auto& f : border_faces)
+      if(movable[std::size_t(f[0])] || movable[std::size_t(f[1])] || movable[std::size_t(f[2])])
+        faces.push_back({{ index(f[0]), index(f[1]), index(f[2]) }});
+    const int centre = int(xe.size());
+    xe.push_back(o);
+    refe.push_back(o);
+    kind.push_back(2);
+    cone_ref = xe;
+    for(const auto& f : faces) {
+      te.push_back({{ centre, f[0], f[1], f[2] }});
+      ge.push_back(cone_weight);
+    }
+    const Untangle_outcome out = untangle_volume_impl(xe, te, real_tets, kind, faces, refe, cone_ref, ge,
+                                                      max_iterations, callback);
+    total.iterations += out.iterations;
+    total.rounds += out.rounds;
+    // The sub-problem's result, certified or not, is where the next, larger
+    // one starts (the others did not move); success is checked on the whole.
+    for(std::size_t i = 0; i < global.size(); ++i) x[std::size_t(global[i])] = xe[i];
+    if(out.success) {
+      total.success = true;
+      return total;
+    }
   }
-  Untangle_outcome out = untangle_volume_impl(xe, te, T0, kind, border_faces, reference, cone_reference, ge,
-                                              max_iterations, callback);
-  xe.pop_back();
-  x.swap(xe);
-  return out;
+  return total;
 }
 
 } // namespace dlf
