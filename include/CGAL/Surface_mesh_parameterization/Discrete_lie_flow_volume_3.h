@@ -310,9 +310,14 @@ private:
       }
     }
     // Converged: D_vol against the prescribed targets, and the shares.
+    // (The last round may have stopped on its rescaled targets' plateau with
+    // both tolerances met on the prescribed ones: that is converged.)
     D::tet_dets(x, tets, u);
-    if(out.stop_reason == Discrete_lie_flow_stop_reason::CONVERGED &&
-       !(energy.value(u, 0) - 2 <= O.tolerance && D::level_share_error(S.level, S.level_share, u) <= S.share_tolerance))
+    const bool reached = energy.value(u, 0) - 2 <= O.tolerance &&
+                         D::level_share_error(S.level, S.level_share, u) <= S.share_tolerance;
+    if(reached && out.stop_reason != Discrete_lie_flow_stop_reason::INTERRUPTED)
+      out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED;
+    else if(!reached && out.stop_reason == Discrete_lie_flow_stop_reason::CONVERGED)
       out.stop_reason = Discrete_lie_flow_stop_reason::PLATEAU;
     R.seconds_flow = std::chrono::duration<double>(Clock::now() - t_flow).count();
     R.stop_reason = out.stop_reason;
