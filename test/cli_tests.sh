@@ -744,7 +744,7 @@ done
 check "no temporaries left (seams)" no_temporaries
 
 # --- volume --------------------------------------------------------------------
-"$DLF" tetrahedralize "$MESHES/sphere.off" -o vol_sphere.mesh --tets 2000 -q
+"$DLF" tetrahedralize "$MESHES/sphere.off" -o vol_sphere.mesh --tets 3000 -q
 check "tetrahedralize sphere.off: exit 0" equals "$?" 0
 check "tetrahedralize: a Tetrahedra section" grep -q '^Tetrahedra' vol_sphere.mesh
 "$DLF" volume vol_sphere.mesh -o vol_ball.mesh --report vol.json --svg vol.svg -q 2> vol.err

@@ -292,7 +292,7 @@ private:
     std::vector<double> flow_target = target;
     D::Volume_flow_outcome out;
     for(int round = 0;; ++round) {
-      const D::Volume_flow_outcome o = D::run_volume_flow(x, tets, topo.on_border, topo.border_faces, flow_target, 0, S,
+      const D::Volume_flow_outcome o = D::run_volume_flow(x, tets, topo.on_border, topo.border_faces, flow_target, S,
                                                           O.record_history ? &R.history : nullptr);
       out.iterations += o.iterations;
       out.rejected_by_exact_check += o.rejected_by_exact_check;

@@ -5,8 +5,9 @@
 // volume ratios, descended along a regularised Gauss–Newton direction (the
 // interior vertices move freely, the border vertices slide on the unit
 // sphere), every step bounded by the tets' critical cubics and certified by
-// the exact predicate. With ε > 0 the same engine untangles a folded start
-// (Garanzha et al.'s regularised denominator χ_ε(u) = (u + √(ε² + u²))/2).
+// the exact predicate. Volume_energy's regularised denominator
+// χ_ε(u) = (u + √(ε² + u²))/2 (Garanzha et al.) serves the untangling of the
+// start (volume_untangle.h); the flow itself runs at ε = 0.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_FLOW_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_FLOW_H
@@ -128,9 +129,6 @@ public:
     for(double a : target) T += a;
     for(std::size_t t = 0; t < target.size(); ++t) m_c[t] = (target[t] / T) * (target[t] / T);
   }
-  /// Untangling: U held at `U0` (Σ u may approach 0 through folds; the
-  /// energy would then reward the collapse).
-  void fix_total(double U0) { m_U0 = U0; }
   static double chi(double u, double eps) { return eps > 0 ? 0.5 * (u + std::sqrt(eps * eps + u * u)) : u; }
   static double dchi(double u, double eps) { return eps > 0 ? 0.5 * (1 + u / std::sqrt(eps * eps + u * u)) : 1.; }
 
@@ -144,7 +142,6 @@ public:
       U += u[t];
       K += m_c[t] / x;
     }
-    if(m_U0 > 0) U = m_U0;
     return U > 0 ? 1 + U * K : std::numeric_limits<double>::infinity();
   }
   /// ∂E/∂u_t and the Gauss–Newton curvature 2 U c_t χ′² / χ³ of every tet.
@@ -152,7 +149,6 @@ public:
   {
     double U = 0, K = 0;
     for(std::size_t t = 0; t < u.size(); ++t) { U += u[t]; K += m_c[t] / chi(u[t], eps); }
-    if(m_U0 > 0) { U = m_U0; K = 0; } // no coupling through U
     dE.resize(u.size());
     w.resize(u.size());
     for(std::size_t t = 0; t < u.size(); ++t) {
@@ -163,7 +159,6 @@ public:
   }
 private:
   std::vector<double> m_c;
-  double m_U0 = 0;
 };
 
 /// The degrees of freedom: an interior vertex moves in space (3), a border
@@ -320,25 +315,24 @@ inline void tet_dets(const std::vector<Vec3>& x, const std::vector<Tet>& tets, s
 }
 
 /// Runs the flow on positions `x` (border points on the unit sphere) until
-/// D_vol − 2 ≤ tolerance, a plateau, a stall or the cap. `eps` > 0:
-/// untangling (no critical-step bound, no exact certification; it stops as
-/// CONVERGED as soon as every tet is positive by the exact predicate, and
-/// lowers ε as it goes). `eps` = 0: the certified flow (x must be positive
-/// everywhere by the exact predicate; it stays so).
+/// D_vol − 2 ≤ tolerance (and the levels' shares within theirs), a
+/// plateau, a stall or the cap. x must be positive everywhere by the exact
+/// predicate; it stays so (and so do the border triangles seen from the
+/// centre with `S.star_shaped_border`).
 inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vector<Tet>& tets,
                                            const std::vector<char>& on_border,
                                            const std::vector<std::array<int, 3> >& border_faces,
                                            const std::vector<double>& target,
-                                           double eps, const Volume_flow_settings& S,
-                                           std::vector<Volume_iteration>* history = nullptr, bool fixed_border = false)
+                                           const Volume_flow_settings& S,
+                                           std::vector<Volume_iteration>* history = nullptr)
 {
   typedef std::chrono::steady_clock Clock;
   const Clock::time_point start = Clock::now();
-  const bool untangle = eps > 0;
+  const double eps = 0;
   const std::size_t V = x.size(), T = tets.size();
   Volume_flow_outcome out;
   Volume_energy energy(target);
-  Volume_dofs dofs(on_border, fixed_border);
+  Volume_dofs dofs(on_border, false);
   std::vector<double> u, dE, w, u_trial;
   std::vector<std::array<Vec3, 4> > grad(T); // ∂(6u)/∂x_k per tet
   std::vector<Vec3> gv(V), d, x_trial(V), hv;
@@ -346,25 +340,11 @@ inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vect
   std::vector<std::array<double, 9> > Minv;
   Eigen::VectorXd g, s, r, z, p, q;
   tet_dets(x, tets, u);
-  if(untangle) {
-    double U0 = 0;
-    for(double a : u) U0 += a;
-    energy.fix_total(U0);
-  }
   double E = energy.value(u, eps);
   double lambda = 1e-3; // Levenberg–Marquardt
-  double E_round = E, mean_det = 0;
-  for(double a : u) mean_det += std::abs(a) / double(T);
-  std::size_t inner = 0;
   std::size_t flat = 0;
-  auto negatives = [&u]() { std::size_t n = 0; for(double a : u) n += (a <= 0); return n; };
   for(std::size_t it = 0;; ++it) {
-    if(untangle) {
-      if(negatives() == 0 && count_bad_tets(x, tets).not_positive() == 0) {
-        out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED;
-        break;
-      }
-    } else if(E - 2 <= S.tolerance && level_share_error(S.level, S.level_share, u) <= S.share_tolerance) {
+    if(E - 2 <= S.tolerance && level_share_error(S.level, S.level_share, u) <= S.share_tolerance) {
       out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED;
       break;
     }
@@ -441,15 +421,14 @@ inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vect
     dofs.expand(s, d);
     // Step bound: the critical cubic of every tet (the certified flow).
     double crit = infinite_step();
-    if(!untangle)
-      for(std::size_t t = 0; t < T; ++t) {
-        const Tet& k = tets[t];
-        const std::size_t a = std::size_t(k[0]), b = std::size_t(k[1]), c = std::size_t(k[2]), e = std::size_t(k[3]);
-        crit = (std::min)(crit, critical_step_tet(x[a], x[b], x[c], x[e], d[a], d[b], d[c], d[e]));
-      }
+    for(std::size_t t = 0; t < T; ++t) {
+      const Tet& k = tets[t];
+      const std::size_t a = std::size_t(k[0]), b = std::size_t(k[1]), c = std::size_t(k[2]), e = std::size_t(k[3]);
+      crit = (std::min)(crit, critical_step_tet(x[a], x[b], x[c], x[e], d[a], d[b], d[c], d[e]));
+    }
     // The border triangles seen from the centre (re-normalising the points
     // scales them by positive factors: the sign of det[a, b, c] is kept).
-    if(!untangle && S.star_shaped_border)
+    if(S.star_shaped_border)
       for(const auto& f : border_faces) {
         const std::size_t a = std::size_t(f[0]), b = std::size_t(f[1]), c = std::size_t(f[2]);
         crit = (std::min)(crit, critical_step_sphere(x[a], x[b], x[c], d[a], d[b], d[c]));
@@ -468,7 +447,7 @@ inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vect
       tet_dets(x_trial, tets, u_trial);
       E_new = energy.value(u_trial, eps);
       if(!(E_new < E)) continue;
-      if(!untangle && (count_bad_tets(x_trial, tets).not_positive() != 0 ||
+      if((count_bad_tets(x_trial, tets).not_positive() != 0 ||
                        (S.star_shaped_border && count_bad_border_faces(x_trial, border_faces) != 0))) {
         ++out.rejected_by_exact_check;
         continue;
@@ -488,44 +467,20 @@ inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vect
     u.swap(u_trial);
     const double progress = (E - E_new) / (std::max)(E_new - 2, 1e-300);
     ++out.iterations;
-    if(untangle) {
-      // Garanzha et al.'s continuation: at fixed ε until the energy stalls
-      // (a relative drop below 1e-3, or ten steps), then ε such that the
-      // smallest regularised determinant shrinks by the factor 1 − σ,
-      // σ = max(0.1, the relative drop of that round).
-      ++inner;
-      const double drop = (E - E_new) / E;
-      E = E_new;
-      if(drop < 1e-3 || inner >= 10) {
-        double umin = std::numeric_limits<double>::infinity();
-        for(double a : u) umin = (std::min)(umin, a);
-        const double sigma = (std::max)(0.1, 1 - E / E_round);
-        const double mu = (1 - sigma) * Volume_energy::chi(umin, eps);
-        eps = umin < mu ? 2 * std::sqrt(mu * (mu - umin)) : 1e-12 * mean_det;
-        E = energy.value(u, eps);
-        E_round = E;
-        inner = 0;
-      }
-    } else {
-      E = E_new;
-    }
+    E = E_new;
     if(history || S.callback) {
       Volume_iteration I;
       I.iteration = out.iterations;
       I.step = step;
       I.critical_step = crit;
       I.d_vol = E;
-      I.epsilon = untangle ? eps : 0;
-      I.negative_tets = untangle ? negatives() : 0;
       I.cg_iterations = cg;
       I.seconds = std::chrono::duration<double>(Clock::now() - start).count();
       if(history) history->push_back(I);
       if(S.callback && !S.callback(I)) { out.stop_reason = Discrete_lie_flow_stop_reason::INTERRUPTED; break; }
     }
-    if(!untangle) {
-      flat = progress < S.plateau ? flat + 1 : 0;
-      if(flat >= S.plateau_window) { out.stop_reason = Discrete_lie_flow_stop_reason::PLATEAU; break; }
-    }
+    flat = progress < S.plateau ? flat + 1 : 0;
+    if(flat >= S.plateau_window) { out.stop_reason = Discrete_lie_flow_stop_reason::PLATEAU; break; }
   }
   out.energy = E;
   return out;
