@@ -58,7 +58,7 @@ struct Discrete_lie_flow_volume_options
   std::function<bool(const internal::dlf::Volume_iteration&)> callback;
 };
 
-/// \ingroup PkgDiscreteLieFlowReports
+/// \ingroup PkgDiscreteLieFlowOptions
 /// One density level's share of the ball: the tets of one density value.
 struct Discrete_lie_flow_volume_share
 {
@@ -69,7 +69,7 @@ struct Discrete_lie_flow_volume_share
   double relative_error() const { return target_share > 0 ? achieved_share / target_share - 1 : 0; }
 };
 
-/// \ingroup PkgDiscreteLieFlowReports
+/// \ingroup PkgDiscreteLieFlowOptions
 /// What a run of `Discrete_lie_flow_volume_parameterizer_3` did.
 struct Discrete_lie_flow_volume_report
 {
@@ -126,21 +126,26 @@ struct Discrete_lie_flow_volume_report
 /// folded.
 ///
 /// \tparam SolverTraits_ `CGAL::Eigen_solver_traits<S>` with `S` an Eigen
-///   sparse SPD solver (the Tutte system and the border's spherical flow).
+///   sparse SPD solver with `analyzePattern()`/`factorize()` for Tutte's system of the start (the border's spherical map uses its own default).
 template <class SolverTraits_ = Default>
 class Discrete_lie_flow_volume_parameterizer_3
 {
 public:
+  /// The solver traits of the start's sparse SPD system (Tutte's embedding).
   typedef typename Default::Get<SolverTraits_,
     Eigen_solver_traits<internal::dlf::Default_spd_solver> >::type Solver_traits;
 
+  /// \param options flow settings (tolerances, caps, density, callback)
   explicit Discrete_lie_flow_volume_parameterizer_3(const Discrete_lie_flow_volume_options& options =
                                                       Discrete_lie_flow_volume_options())
     : m_options(options)
   {}
 
+  /// The settings, to read or change before `parameterize()`.
   Discrete_lie_flow_volume_options& options() { return m_options; }
+  /// The settings.
   const Discrete_lie_flow_volume_options& options() const { return m_options; }
+  /// The report of this object's last run.
   const Discrete_lie_flow_volume_report& report() const { return m_report; }
 
   /// Maps the tet soup (`points`: anything with `x()`, `y()`, `z()`;
