@@ -3,10 +3,28 @@
 //
 // `dlf tetrahedralize`: a tetrahedral mesh of the solid a closed surface
 // bounds, by CGAL's Mesh_3, written as Medit `.mesh` (the input of
-// `dlf volume`). In its own translation unit: Mesh_3 compiles slowly.
+// `dlf volume`). In its own translation unit: Mesh_3 compiles slowly, and
+// builds configured with DLF_WITH_TETRAHEDRALIZE=OFF (the sanitizer build)
+// leave it out.
 
 #include "cli_error.h"
 #include "commands.h"
+
+#ifdef DLF_WITHOUT_TETRAHEDRALIZE
+
+namespace dlf_cli {
+
+int tetrahedralize_command(const std::vector<std::string>&)
+{
+  throw Cli_error("'dlf tetrahedralize' is not available: this dlf was built without CGAL's Mesh_3 (CMake option "
+                  "DLF_WITH_TETRAHEDRALIZE=OFF); 'dlf volume' reads the Medit .mesh of any tetrahedral mesher",
+                  EXIT_FLOW_ERROR);
+}
+
+} // namespace dlf_cli
+
+#else
+
 #include "mesh_input.h"
 #include "output_files.h"
 
@@ -171,3 +189,5 @@ int tetrahedralize_command(const std::vector<std::string>& args)
 }
 
 } // namespace dlf_cli
+
+#endif // DLF_WITHOUT_TETRAHEDRALIZE
