@@ -780,6 +780,14 @@ check "volume --svg: an SVG picture" grep -q '<svg' vol.svg
 "$DLF" volume vol_sphere.mesh --roi-ball 0 0 0.5 0.5 --factor 4 --report vol_roi.json -q
 check "volume --roi-ball x4: exit 0, region within 1% of its share" equals \
   "$? $(/usr/bin/python3 -c "import json; r = json.load(open('vol_roi.json'))['roi']; print(abs(r['relative_error']) <= 0.01)")" "0 True"
+"$DLF" volume vol_sphere.mesh --border-start conformal --border-max-iterations 0 --report vol_conformal.json -q
+check "volume --border-start conformal --border-max-iterations 0: converged from the conformal border alone, as reported" equals \
+  "$? $(json_get vol_conformal.json "" stop_reason) $(json_get vol_conformal.json start border_stop_reason) $(json_get vol_conformal.json options border_start) $(json_get vol_conformal.json options border_max_iterations)" \
+  "0 converged iteration_cap conformal 0"
+check "volume --border-start conformal: the border's D_area is the conformal start's, above the flow's" \
+  number_is "$(json_get vol_conformal.json start border_d_area)" ">" "$(json_get vol.json start border_d_area)"
+"$DLF" volume vol_sphere.mesh --border-start foo 2> vol_border_start.err
+check "volume --border-start foo: exit 1, named" equals "$? $(grep -c 'border-start takes tutte or conformal' vol_border_start.err)" "1 1"
 printf 'MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\nTetrahedra\n1\n1 2 4 3 1\nEnd\n' > vol_inverted.mesh
 "$DLF" volume vol_inverted.mesh 2> vol_inverted.err
 check "volume: an inverted tet is bad input (exit 1), named" equals \

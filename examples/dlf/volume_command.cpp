@@ -113,7 +113,7 @@ const char* stop_name(SMP::Discrete_lie_flow_stop_reason r)
 
 int volume_command(const std::vector<std::string>& args)
 {
-  std::string output, report_path, svg_path, density_file;
+  std::string output, report_path, svg_path, density_file, border_start = "tutte";
   SMP::Discrete_lie_flow_volume_options options;
   po::options_description visible("Options");
   visible.add_options()
@@ -130,6 +130,12 @@ int volume_command(const std::vector<std::string>& args)
     ("mu", po::value<double>(&options.mu), "fraction of the critical step, in (0, 1) (default 0.8)")
     ("cg-iterations", po::value<std::size_t>(&options.cg_max_iterations),
      "conjugate-gradient cap of each Gauss-Newton solve (default 60)")
+    ("untangle-iterations", po::value<std::size_t>(&options.untangle_max_iterations)->value_name("N"),
+     "iteration cap of each stage of the start's untangling (4 stages; default 3000)")
+    ("border-start", po::value<std::string>(&border_start)->value_name("tutte|conformal"),
+     "the start of the border's spherical map (default tutte)")
+    ("border-max-iterations", po::value<std::size_t>(&options.border.max_iterations)->value_name("N"),
+     "iteration cap of the border's spherical flow (default 500; 0: its start alone)")
     ("density", po::value<std::string>(&density_file)->value_name("FILE"),
      "measure control: one density > 0 per tetrahedron, in file order")
     ("roi-ball", po::value<std::vector<double> >()->multitoken()->value_name("X Y Z R"),
@@ -179,6 +185,8 @@ int volume_command(const std::vector<std::string>& args)
   if(has_roi && !density_file.empty()) throw Cli_error("--density and --roi-ball exclude each other");
   options.record_history = vm.count("history") != 0;
   options.star_shaped_border = vm.count("star-shaped") != 0;
+  if(border_start == "conformal") options.border.sphere.start = SMP::Discrete_lie_flow_sphere_start::CONFORMAL;
+  else if(border_start != "tutte") throw Cli_error("--border-start takes tutte or conformal");
   Output_files files;
   if(!output.empty()) files.declare(output, "-o");
   if(!report_path.empty()) files.declare(report_path, "--report");
@@ -307,7 +315,9 @@ int volume_command(const std::vector<std::string>& args)
     if(has_roi)
       j["roi"] = { { "ball", roi.ball }, { "factor", roi.factor }, { "target_share", roi_target },
                    { "achieved_share", roi_achieved }, { "relative_error", roi_achieved / roi_target - 1 } };
-    j["options"] = { { "tolerance", options.tolerance }, { "share_tolerance", options.share_tolerance }, { "max_iterations", options.max_iterations }, { "mu", options.mu } };
+    j["options"] = { { "tolerance", options.tolerance }, { "share_tolerance", options.share_tolerance }, { "max_iterations", options.max_iterations }, { "mu", options.mu },
+                       { "border_start", border_start }, { "border_max_iterations", options.border.max_iterations },
+                       { "untangle_iterations", options.untangle_max_iterations } };
     j["counters"] = { { "rejected_by_exact_check", R.rejected_by_exact_check }, { "cg_iterations", R.cg_iterations } };
     j["seconds"] = { { "border", R.seconds_border }, { "interior", R.seconds_interior }, { "untangle", R.seconds_untangle },
                      { "flow", R.seconds_flow }, { "total", R.seconds_total } };
