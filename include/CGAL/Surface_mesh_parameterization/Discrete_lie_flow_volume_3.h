@@ -35,7 +35,9 @@ struct Discrete_lie_flow_volume_options
   std::size_t max_iterations = 300; ///< iteration cap of the flow
   double mu = 0.8;                  ///< fraction of the critical step, in (0, 1)
   std::size_t cg_max_iterations = 60; ///< conjugate-gradient cap of each Gauss–Newton solve
-  std::size_t untangle_max_iterations = 10000; ///< iteration cap of each stage of the start's untangling (volume_untangle.h)
+  /// Iteration cap of the start's untangling, its stages together (each
+  /// stage at most 10,000; volume_untangle.h).
+  std::size_t untangle_max_iterations = 20000;
   /// Keep the border star-shaped during the flow: every border triangle
   /// positive seen from the centre, besides every tet positive; both
   /// together certify that the map is a bijection onto its image (the
