@@ -131,7 +131,7 @@ int volume_command(const std::vector<std::string>& args)
     ("cg-iterations", po::value<std::size_t>(&options.cg_max_iterations),
      "conjugate-gradient cap of each Gauss-Newton solve (default 60)")
     ("untangle-iterations", po::value<std::size_t>(&options.untangle_max_iterations)->value_name("N"),
-     "iteration cap of the start's untangling, its 4 stages together (default 20000; at most 10000 per stage)")
+     "iteration cap of the start's untangling, its 4 stages together (default 12000; at most 10000 per stage)")
     ("border-start", po::value<std::string>(&border_start)->value_name("tutte|conformal"),
      "the start of the border's spherical map (default tutte)")
     ("border-max-iterations", po::value<std::size_t>(&options.border.max_iterations)->value_name("N"),

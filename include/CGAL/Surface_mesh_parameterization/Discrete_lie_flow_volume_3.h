@@ -37,7 +37,7 @@ struct Discrete_lie_flow_volume_options
   std::size_t cg_max_iterations = 60; ///< conjugate-gradient cap of each Gauss–Newton solve
   /// Iteration cap of the start's untangling, its stages together (each
   /// stage at most 10,000; volume_untangle.h).
-  std::size_t untangle_max_iterations = 20000;
+  std::size_t untangle_max_iterations = 12000;
   /// Keep the border star-shaped during the flow: every border triangle
   /// positive seen from the centre, besides every tet positive; both
   /// together certify that the map is a bijection onto its image (the
