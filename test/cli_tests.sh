@@ -3,6 +3,8 @@
 #
 #   bash test/cli_tests.sh PATH/TO/dlf MESHES_DIR
 #
+# DLF_TETRAHEDRALIZE=0: the tool was configured with
+# DLF_WITH_TETRAHEDRALIZE=OFF (CTest sets it from the build).
 # Exits non-zero if any check fails. Needs bash, awk, coreutils and python3
 # (reports are read with awk: the tool pretty-prints them, one field a line;
 # shares, XML and PNG are checked with python3); the check of in-place
@@ -14,6 +16,7 @@ DLF=${1:?usage: cli_tests.sh PATH/TO/dlf MESHES_DIR}
 MESHES=${2:?usage: cli_tests.sh PATH/TO/dlf MESHES_DIR}
 # Absolute paths: the tests run in a scratch directory.
 DLF=$(readlink -f "$DLF"); MESHES=$(readlink -f "$MESHES")
+TEST_DATA=$(readlink -f "$(dirname "${BASH_SOURCE[0]}")/data")
 WORK=$(mktemp -d "${TMPDIR:-/tmp}/dlf_cli_tests.XXXXXX")
 trap 'rm -rf "$WORK"' EXIT
 cd "$WORK" || exit 1
@@ -742,6 +745,61 @@ for ext in off obj; do
   check "cut-open mesh (.$ext): 0 inverted faces" equals "$(json_get "cut_open_score_$ext.json" metrics inverted_faces)" 0
 done
 check "no temporaries left (seams)" no_temporaries
+
+# --- volume --------------------------------------------------------------------
+# DLF_TETRAHEDRALIZE=0 (a tool built without Mesh_3, as under the sanitizers):
+# the volume tests start from the same Mesh_3 sphere kept in test/data.
+if [ "${DLF_TETRAHEDRALIZE:-1}" = 0 ]; then
+  "$DLF" tetrahedralize "$MESHES/sphere.off" -o vol_sphere.mesh --tets 3000 -q 2> vol_tet.err
+  check "tetrahedralize without Mesh_3: exit 2, says so, writes nothing" equals \
+    "$? $(grep -c 'built without CGAL.s Mesh_3' vol_tet.err) $(ls vol_sphere.mesh 2> /dev/null | wc -l)" "2 1 0"
+  cp "$TEST_DATA/sphere_tets.mesh" vol_sphere.mesh
+else
+  "$DLF" tetrahedralize "$MESHES/sphere.off" -o vol_sphere.mesh --tets 3000 -q
+  check "tetrahedralize sphere.off: exit 0" equals "$?" 0
+  check "tetrahedralize: a Tetrahedra section" grep -q '^Tetrahedra' vol_sphere.mesh
+fi
+"$DLF" volume vol_sphere.mesh -o vol_ball.mesh --report vol.json --svg vol.svg -q 2> vol.err
+check "volume: exit 0" equals "$?" 0
+check "volume report: status ok, converged, start certified, 0 inverted tets" equals \
+  "$(json_get vol.json "" status) $(json_get vol.json "" stop_reason) $(json_get vol.json start certified) $(json_get vol.json final inverted_tets)" \
+  "ok converged true 0"
+check "volume: d_vol <= 2.01" number_is "$(json_get vol.json final d_vol)" "<=" 2.01
+check "volume: the output keeps the tetrahedra" equals "$(sed -n '/^Tetrahedra/{n;p}' vol_ball.mesh)" "$(sed -n '/^Tetrahedra/{n;p}' vol_sphere.mesh)"
+check "volume: border vertices on the unit sphere, all inside the ball (recomputed)" /usr/bin/python3 - vol_ball.mesh <<'PY'
+import math, sys
+t = [l.split() for l in open(sys.argv[1])]
+i = next(k for k, l in enumerate(t) if l == ["Vertices"]); n = int(t[i + 1][0])
+p = [tuple(map(float, l[:3])) for l in t[i + 2:i + 2 + n]]
+j = next(k for k, l in enumerate(t) if l == ["Triangles"]); m = int(t[j + 1][0])
+border = {int(v) - 1 for l in t[j + 2:j + 2 + m] for v in l[:3]}
+r = [math.sqrt(sum(c * c for c in q)) for q in p]
+sys.exit(not (all(abs(r[v] - 1) < 1e-12 for v in border) and all(x <= 1 + 1e-12 for x in r) and len(border) > 0))
+PY
+check "volume --svg: an SVG picture" grep -q '<svg' vol.svg
+"$DLF" volume vol_sphere.mesh --roi-ball 0 0 0.5 0.5 --factor 4 --report vol_roi.json -q
+check "volume --roi-ball x4: exit 0, region within 1% of its share" equals \
+  "$? $(/usr/bin/python3 -c "import json; r = json.load(open('vol_roi.json'))['roi']; print(abs(r['relative_error']) <= 0.01)")" "0 True"
+"$DLF" volume vol_sphere.mesh --border-start conformal --border-max-iterations 0 --report vol_conformal.json -q
+check "volume --border-start conformal --border-max-iterations 0: converged from the conformal border alone, as reported" equals \
+  "$? $(json_get vol_conformal.json "" stop_reason) $(json_get vol_conformal.json start border_stop_reason) $(json_get vol_conformal.json options border_start) $(json_get vol_conformal.json options border_max_iterations)" \
+  "0 converged iteration_cap conformal 0"
+check "volume --border-start conformal: the border's D_area is the conformal start's, above the flow's" \
+  number_is "$(json_get vol_conformal.json start border_d_area)" ">" "$(json_get vol.json start border_d_area)"
+"$DLF" volume vol_sphere.mesh --border-start foo 2> vol_border_start.err
+check "volume --border-start foo: exit 1, named" equals "$? $(grep -c 'border-start takes tutte or conformal' vol_border_start.err)" "1 1"
+printf 'MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\nTetrahedra\n1\n1 2 4 3 1\nEnd\n' > vol_inverted.mesh
+"$DLF" volume vol_inverted.mesh 2> vol_inverted.err
+check "volume: an inverted tet is bad input (exit 1), named" equals \
+  "$? $(grep -c 'tetrahedron 0 is inverted' vol_inverted.err)" "1 1"
+printf 'MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\nTetrahedra\n1\n1 2 3 9 1\nEnd\n' > vol_range.mesh
+"$DLF" volume vol_range.mesh 2> vol_range.err
+check "volume: a parse error names the line (exit 1)" equals "$? $(grep -c 'line 11: tetrahedron 1 of 1 refers to vertex 9' vol_range.err)" "1 1"
+if [ "${DLF_TETRAHEDRALIZE:-1}" != 0 ]; then
+  "$DLF" tetrahedralize "$MESHES/elk.off" -o vol_torus.mesh 2> vol_torus.err
+  check "tetrahedralize: a surface of genus 1 is refused (exit 1)" equals "$? $(grep -c 'Euler characteristic 0' vol_torus.err)" "1 1"
+fi
+check "no temporaries left (volume)" no_temporaries
 
 echo
 if [ "$failures" -ne 0 ]; then

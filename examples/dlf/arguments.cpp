@@ -187,6 +187,8 @@ void print_main_help(std::ostream& out)
          "  dlf disk INPUT [options]        map a disk-topology triangle mesh onto the plane\n"
          "  dlf score [MESH] PARAM.obj      measure the distortion of an existing map\n"
          "  dlf sphere INPUT [options]      map a closed genus-0 mesh onto the unit sphere\n"
+         "  dlf volume MESH.mesh [options]  map a tetrahedral mesh of a ball into the unit ball\n"
+         "  dlf tetrahedralize SURFACE -o OUT.mesh  tetrahedra of a closed surface's solid (Mesh_3)\n"
          "  dlf info MESH                   topology and degeneracy report; which command fits\n"
          "\n"
          "'dlf COMMAND --help' lists the options of a command.\n\n"

@@ -16,6 +16,8 @@ int disk_command(const std::vector<std::string>& args);
 int score_command(const std::vector<std::string>& args);
 int sphere_command(const std::vector<std::string>& args);
 int info_command(const std::vector<std::string>& args);
+int volume_command(const std::vector<std::string>& args);
+int tetrahedralize_command(const std::vector<std::string>& args);
 
 } // namespace dlf_cli
 

@@ -25,12 +25,14 @@ int main(int argc, char** argv)
     if(command == "score") return score_command(args);
     if(command == "sphere") return sphere_command(args);
     if(command == "info") return info_command(args);
+    if(command == "volume") return volume_command(args);
+    if(command == "tetrahedralize") return tetrahedralize_command(args);
     if(command == "--help" || command == "-h" || command == "help") {
       print_main_help(std::cout);
       return EXIT_OK;
     }
-    if(command.empty()) throw Cli_error("missing command: disk, sphere, score or info (see 'dlf --help')");
-    throw Cli_error("unknown command '" + command + "': expected disk, sphere, score or info (see 'dlf --help')");
+    if(command.empty()) throw Cli_error("missing command: disk, sphere, volume, tetrahedralize, score or info (see 'dlf --help')");
+    throw Cli_error("unknown command '" + command + "': expected disk, sphere, volume, tetrahedralize, score or info (see 'dlf --help')");
   } catch(const Cli_error& e) {
     std::cerr << "dlf: error: " << e.what() << std::endl;
     return e.code();

@@ -1,0 +1,193 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// `dlf tetrahedralize`: a tetrahedral mesh of the solid a closed surface
+// bounds, by CGAL's Mesh_3, written as Medit `.mesh` (the input of
+// `dlf volume`). In its own translation unit: Mesh_3 compiles slowly, and
+// builds configured with DLF_WITH_TETRAHEDRALIZE=OFF (the sanitizer build)
+// leave it out.
+
+#include "cli_error.h"
+#include "commands.h"
+
+#ifdef DLF_WITHOUT_TETRAHEDRALIZE
+
+namespace dlf_cli {
+
+int tetrahedralize_command(const std::vector<std::string>&)
+{
+  throw Cli_error("'dlf tetrahedralize' is not available: this dlf was built without CGAL's Mesh_3 (CMake option "
+                  "DLF_WITH_TETRAHEDRALIZE=OFF); 'dlf volume' reads the Medit .mesh of any tetrahedral mesher",
+                  EXIT_FLOW_ERROR);
+}
+
+} // namespace dlf_cli
+
+#else
+
+#include "mesh_input.h"
+#include "output_files.h"
+
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_medit.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Mesh_criteria_3.h>
+#include <CGAL/Mesh_triangulation_3.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polyhedral_mesh_domain_3.h>
+#include <CGAL/Random.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/make_mesh_3.h>
+
+#include <boost/program_options.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <map>
+
+namespace dlf_cli {
+
+namespace {
+
+namespace po = boost::program_options;
+namespace D = CGAL::Surface_mesh_parameterization::internal::dlf;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Polyhedron;
+typedef CGAL::Polyhedral_mesh_domain_3<Polyhedron, K> Mesh_domain;
+typedef CGAL::Mesh_triangulation_3<Mesh_domain, CGAL::Default, CGAL::Sequential_tag>::type Tr;
+typedef CGAL::Mesh_complex_3_in_triangulation_3<Tr> C3t3;
+typedef CGAL::Mesh_criteria_3<Tr> Mesh_criteria;
+
+const char* tetrahedralize_help =
+  "Usage: dlf tetrahedralize SURFACE -o OUT.mesh [--tets N | --size S] [options]\n"
+  "\n"
+  "Meshes the solid bounded by a closed genus-0 triangle surface with\n"
+  "tetrahedra (CGAL's Mesh_3, deterministic seed) and writes Medit .mesh:\n"
+  "the input of 'dlf volume'. Only the vertices of the tetrahedra are written.\n"
+  "\n"
+  "Examples:\n"
+  "  dlf tetrahedralize build/data/meshes/bunny00.off -o bunny.mesh --tets 20000\n"
+  "  dlf tetrahedralize camel.off -o camel.mesh --size 0.02 --no-optimize\n";
+
+} // namespace
+
+int tetrahedralize_command(const std::vector<std::string>& args)
+{
+  std::string output, input;
+  double size = 0;
+  std::size_t target_tets = 0;
+  po::options_description visible("Options");
+  visible.add_options()
+    ("help,h", "this help")
+    ("output,o", po::value<std::string>(&output), "the Medit .mesh to write")
+    ("tets", po::value<std::size_t>(&target_tets)->value_name("N"),
+     "a size bound derived from N and the solid's volume (default 10000; Mesh_3 makes about 0.4 to 0.7 N tetrahedra on CGAL's meshes)")
+    ("size", po::value<double>(&size)->value_name("S"),
+     "the tetrahedra's size bound as a fraction of the bounding box's diagonal (instead of --tets)")
+    ("no-optimize", "skip the sliver perturbation and exudation (faster, worse tetrahedra)")
+    ("quiet,q", "print nothing on success");
+  po::options_description all;
+  all.add(visible);
+  all.add_options()("input", po::value<std::vector<std::string> >());
+  po::positional_options_description positional;
+  positional.add("input", -1);
+  po::variables_map vm;
+  try {
+    const int style = po::command_line_style::default_style & ~po::command_line_style::allow_guessing;
+    po::store(po::command_line_parser(args).options(all).positional(positional).style(style).run(), vm);
+    po::notify(vm);
+  } catch(const po::error& e) {
+    throw Cli_error(std::string(e.what()) + " (see 'dlf tetrahedralize --help')");
+  }
+  if(vm.count("help")) {
+    std::cout << tetrahedralize_help << "\n" << visible;
+    return EXIT_OK;
+  }
+  const std::vector<std::string> inputs = vm.count("input") ? vm["input"].as<std::vector<std::string> >()
+                                                              : std::vector<std::string>();
+  if(inputs.size() != 1) throw Cli_error("expected one input surface (see 'dlf tetrahedralize --help')");
+  input = inputs[0];
+  if(output.empty()) throw Cli_error("missing -o OUT.mesh");
+  if(vm.count("tets") && vm.count("size")) throw Cli_error("--tets and --size exclude each other");
+  if(vm.count("size") && !(size > 0 && size < 1)) throw Cli_error("--size must lie in (0, 1)");
+  if(vm.count("tets") && target_tets < 10) throw Cli_error("--tets must be at least 10");
+  if(!vm.count("size") && !vm.count("tets")) target_tets = 10000;
+  const bool quiet = vm.count("quiet") != 0;
+  Output_files files;
+  files.declare(output, "-o");
+
+  const Indexed_mesh surface = read_triangle_mesh(input);
+  Polyhedron poly;
+  std::vector<Polyhedron::Vertex_index> vi;
+  for(const Vec3& p : surface.xyz) vi.push_back(poly.add_vertex(K::Point_3(p[0], p[1], p[2])));
+  for(std::size_t f = 0; f < surface.faces.size(); ++f) {
+    const Triangle& t = surface.faces[f];
+    if(poly.add_face(vi[std::size_t(t[0])], vi[std::size_t(t[1])], vi[std::size_t(t[2])]) == Polyhedron::null_face())
+      throw Cli_error(input + ": face " + std::to_string(f) + " makes the surface non-manifold");
+  }
+  if(!CGAL::is_closed(poly))
+    throw Cli_error(input + ": the surface has a border; the solid needs a closed surface");
+  const long long chi = (long long)(poly.number_of_vertices()) - (long long)(poly.number_of_edges()) +
+                        (long long)(poly.number_of_faces());
+  if(chi != 2)
+    throw Cli_error(input + ": the surface has Euler characteristic " + std::to_string(chi) +
+                    "; a ball's border is one sphere (2)");
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(poly);
+  const double diag = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                CGAL::square(box.zmax() - box.zmin()));
+  double s = size * diag;
+  if(!vm.count("size")) {
+    const double volume = std::abs(CGAL::to_double(CGAL::Polygon_mesh_processing::volume(poly)));
+    if(!(volume > 0)) throw Cli_error(input + ": the surface bounds no volume");
+    // A regular tet of edge a has volume a³/(6√2); Mesh_3's cells come out
+    // somewhat smaller than the bound.
+    s = 1.1 * std::cbrt(6 * std::sqrt(2.) * volume / double(target_tets));
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  CGAL::get_default_random() = CGAL::Random(0);
+  Mesh_domain domain(poly);
+  namespace params = CGAL::parameters;
+  Mesh_criteria criteria(params::facet_angle = 25, params::facet_size = s, params::facet_distance = 0.05 * s,
+                         params::cell_radius_edge_ratio = 3, params::cell_size = s);
+  C3t3 c3t3 = vm.count("no-optimize")
+    ? CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude(), params::manifold())
+    : CGAL::make_mesh_3<C3t3>(domain, criteria, params::manifold());
+  // The cells of the complex, their vertices numbered in order of appearance.
+  std::map<Tr::Vertex_handle, int> index;
+  std::vector<D::Vec3> points;
+  std::vector<D::Tet> tets;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
+    D::Tet t;
+    for(int k = 0; k < 4; ++k) {
+      auto it = index.find(c->vertex(k));
+      if(it == index.end()) {
+        it = index.emplace(c->vertex(k), int(points.size())).first;
+        const auto& p = c3t3.triangulation().point(c->vertex(k));
+        points.push_back({{ CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) }});
+      }
+      t[std::size_t(k)] = it->second;
+    }
+    tets.push_back(t);
+  }
+  if(tets.empty()) throw Cli_error(input + ": Mesh_3 produced no tetrahedra (an inside-out or open surface?)");
+  D::Ball_topology topo;
+  std::string message;
+  const int code = D::check_ball(points, tets, topo, message);
+  if(code != 0)
+    throw Cli_error(input + ": the tetrahedral mesh is not a ball (" + message + "); try a smaller --size", EXIT_FLOW_ERROR);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  files.write(output, [&](std::ostream& os) {
+    D::write_medit(os, points, tets, std::vector<int>(tets.size(), 1), topo.border_faces);
+  });
+  files.commit();
+  if(!quiet)
+    std::cout << "tetrahedralize: " << points.size() << " vertices (" << topo.border_vertices << " on the border), "
+              << tets.size() << " tetrahedra, " << seconds << " s -> " << output << std::endl;
+  return EXIT_OK;
+}
+
+} // namespace dlf_cli
+
+#endif // DLF_WITHOUT_TETRAHEDRALIZE

@@ -1,0 +1,494 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The certified volumetric flow: D_vol, the barrier energy of the tets'
+// volume ratios, descended along a regularised Gauss–Newton direction (the
+// interior vertices move freely, the border vertices slide on the unit
+// sphere), every step bounded by the tets' critical cubics and certified by
+// the exact predicate. Volume_energy's regularised denominator
+// χ_ε(u) = (u + √(ε² + u²))/2 (Garanzha et al.) serves the untangling of the
+// start (volume_untangle.h); the flow itself runs at ε = 0.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_FLOW_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_FLOW_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/critical_step.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_mesh.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace dlf {
+
+/// Coefficients (a, b, c, d) of det[p1 − p0 + λ(d1 − d0), p2 − p0 + λ(d2 − d0), p3 − p0 + λ(d3 − d0)],
+/// six times the volume of a tet whose corners move linearly (difference
+/// form: d is the current determinant).
+inline std::array<double, 4> tet_volume_cubic(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3,
+                                              const Vec3& d0, const Vec3& d1, const Vec3& d2, const Vec3& d3)
+{
+  const Vec3 a1 = sub(p1, p0), a2 = sub(p2, p0), a3 = sub(p3, p0);
+  const Vec3 b1 = sub(d1, d0), b2 = sub(d2, d0), b3 = sub(d3, d0);
+  auto det = [](const Vec3& x, const Vec3& y, const Vec3& z) { return dot(x, cross(y, z)); };
+  return {{ det(b1, b2, b3),
+            det(a1, b2, b3) + det(b1, a2, b3) + det(b1, b2, a3),
+            det(b1, a2, a3) + det(a1, b2, a3) + det(a1, a2, b3),
+            det(a1, a2, a3) }};
+}
+
+/// The first λ > 0 at which a positive tet moving along (d0, …, d3) degenerates, +∞ if never.
+inline double critical_step_tet(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3,
+                                const Vec3& d0, const Vec3& d1, const Vec3& d2, const Vec3& d3)
+{
+  const std::array<double, 4> c = tet_volume_cubic(p0, p1, p2, p3, d0, d1, d2, d3);
+  return smallest_positive_root(c[0], c[1], c[2], c[3]);
+}
+
+/// What one iteration of the volumetric flow did.
+struct Volume_iteration
+{
+  std::size_t iteration = 0;
+  double step = 0;           ///< the accepted step λ (1: the full Gauss–Newton step)
+  double critical_step = 0;  ///< the smallest critical step of the direction
+  double d_vol = 0;          ///< D_vol after the step (with ε > 0: the regularised energy)
+  double epsilon = 0;        ///< the untangling's ε, 0 in the certified flow
+  std::size_t negative_tets = 0; ///< by the doubles, after the step (untangling)
+  std::size_t cg_iterations = 0;
+  double seconds = 0;        ///< since the flow started
+};
+
+/// Settings of one run of the engine.
+struct Volume_flow_settings
+{
+  double tolerance = 0.01;         ///< stop when D_vol − 2 ≤ tolerance
+  std::size_t max_iterations = 300;
+  double mu = 0.8;                 ///< fraction of the critical step
+  std::size_t cg_max_iterations = 200;
+  double cg_tolerance = 1e-3;      ///< relative residual of the inexact Gauss–Newton solve
+  double plateau = 1e-4;           ///< stop when (E_prev − E)/(E − 2) stays below this ...
+  std::size_t plateau_window = 8;  ///< ... for this many iterations in a row
+  /// Keep every border triangle positive seen from the centre (a
+  /// star-shaped border: with positive tets, a certificate of bijectivity).
+  bool star_shaped_border = true;
+  std::function<bool(const Volume_iteration&)> callback; ///< false: stop (INTERRUPTED)
+  /// Measure control: the level (0, 1, ...) of every tet (empty: none);
+  /// converged also needs every level's share of the volume within
+  /// `share_tolerance` of its prescribed share, relative.
+  std::vector<int> level;
+  std::vector<double> level_share; ///< the prescribed share of every level
+  double share_tolerance = 0.005;
+};
+
+/// The largest relative error of the levels' shares, |achieved/prescribed − 1|;
+/// `achieved` receives the achieved shares.
+inline double level_share_error(const std::vector<int>& level, const std::vector<double>& prescribed,
+                                const std::vector<double>& u, std::vector<double>* achieved = nullptr)
+{
+  if(level.empty()) return 0;
+  std::vector<double> a(prescribed.size(), 0.);
+  double A = 0;
+  for(std::size_t t = 0; t < u.size(); ++t) { a[std::size_t(level[t])] += u[t]; A += u[t]; }
+  double e = 0;
+  for(std::size_t k = 0; k < a.size(); ++k) {
+    a[k] /= A;
+    if(prescribed[k] > 0) e = (std::max)(e, std::abs(a[k] / prescribed[k] - 1));
+  }
+  if(achieved) achieved->swap(a);
+  return e;
+}
+
+/// The engine's outcome.
+struct Volume_flow_outcome
+{
+  Discrete_lie_flow_stop_reason stop_reason = Discrete_lie_flow_stop_reason::NOT_RUN;
+  std::size_t iterations = 0;
+  std::size_t rejected_by_exact_check = 0;
+  std::size_t cg_iterations = 0;
+  double energy = 0;
+};
+
+/// The energy E = 1 + U Σ_t c_t / χ(u_t), c_t = (target_t / Σ target)², U = Σ u_t;
+/// with χ(u) = u it is D_vol = Σ w_t (r_t + 1/r_t), w_t = target_t / Σ target,
+/// r_t = (u_t/U)/w_t, whose minimum 2 is reached when every tet has its share.
+class Volume_energy
+{
+public:
+  explicit Volume_energy(const std::vector<double>& target) : m_c(target.size())
+  {
+    double T = 0;
+    for(double a : target) T += a;
+    for(std::size_t t = 0; t < target.size(); ++t) m_c[t] = (target[t] / T) * (target[t] / T);
+  }
+  static double chi(double u, double eps) { return eps > 0 ? 0.5 * (u + std::sqrt(eps * eps + u * u)) : u; }
+  static double dchi(double u, double eps) { return eps > 0 ? 0.5 * (1 + u / std::sqrt(eps * eps + u * u)) : 1.; }
+
+  /// E(u); +∞ when ε = 0 and a tet is not positive.
+  double value(const std::vector<double>& u, double eps) const
+  {
+    double U = 0, K = 0;
+    for(std::size_t t = 0; t < u.size(); ++t) {
+      const double x = chi(u[t], eps);
+      if(!(x > 0)) return std::numeric_limits<double>::infinity();
+      U += u[t];
+      K += m_c[t] / x;
+    }
+    return U > 0 ? 1 + U * K : std::numeric_limits<double>::infinity();
+  }
+  /// ∂E/∂u_t and the Gauss–Newton curvature 2 U c_t χ′² / χ³ of every tet.
+  void derivatives(const std::vector<double>& u, double eps, std::vector<double>& dE, std::vector<double>& w) const
+  {
+    double U = 0, K = 0;
+    for(std::size_t t = 0; t < u.size(); ++t) { U += u[t]; K += m_c[t] / chi(u[t], eps); }
+    dE.resize(u.size());
+    w.resize(u.size());
+    for(std::size_t t = 0; t < u.size(); ++t) {
+      const double x = chi(u[t], eps), dx = dchi(u[t], eps);
+      dE[t] = K - U * m_c[t] * dx / (x * x);
+      w[t] = 2 * U * m_c[t] * dx * dx / (x * x * x);
+    }
+  }
+private:
+  std::vector<double> m_c;
+};
+
+/// The degrees of freedom: an interior vertex moves in space (3), a border
+/// vertex in the tangent plane of the sphere at its point (2).
+class Volume_dofs
+{
+public:
+  /// `fixed_border`: the border vertices do not move (no dofs).
+  Volume_dofs(const std::vector<char>& on_border, bool fixed_border)
+    : m_offset(on_border.size()), m_border(on_border), m_fixed(fixed_border)
+  {
+    for(std::size_t v = 0; v < on_border.size(); ++v) {
+      m_offset[v] = m_n;
+      m_n += on_border[v] ? (fixed_border ? 0 : 2) : 3;
+    }
+    m_frame.resize(on_border.size());
+  }
+  int size() const { return m_n; }
+  /// Tangent frames at the current border points.
+  void update_frames(const std::vector<Vec3>& x)
+  {
+    for(std::size_t v = 0; v < x.size(); ++v) {
+      if(!m_border[v]) continue;
+      const Vec3 n = normalized(x[v]);
+      const Vec3 a = std::abs(n[0]) < 0.6 ? Vec3{{ 1, 0, 0 }} : Vec3{{ 0, 1, 0 }};
+      const Vec3 t1 = normalized(cross(n, a));
+      m_frame[v] = {{ t1, cross(n, t1) }};
+    }
+  }
+  /// Vertex displacements of the dof vector s.
+  void expand(const Eigen::VectorXd& s, std::vector<Vec3>& d) const
+  {
+    d.resize(m_offset.size());
+    for(std::size_t v = 0; v < m_offset.size(); ++v) {
+      const int o = m_offset[v];
+      if(m_border[v] && m_fixed) {
+        d[v] = {{ 0, 0, 0 }};
+      } else if(m_border[v]) {
+        const Vec3& a = m_frame[v][0];
+        const Vec3& b = m_frame[v][1];
+        d[v] = {{ s[o] * a[0] + s[o + 1] * b[0], s[o] * a[1] + s[o + 1] * b[1], s[o] * a[2] + s[o + 1] * b[2] }};
+      } else {
+        d[v] = {{ s[o], s[o + 1], s[o + 2] }};
+      }
+    }
+  }
+  /// The dof components of per-vertex vectors (the transpose of expand).
+  void restrict(const std::vector<Vec3>& g, Eigen::VectorXd& s) const
+  {
+    s.resize(m_n);
+    for(std::size_t v = 0; v < m_offset.size(); ++v) {
+      const int o = m_offset[v];
+      if(m_border[v] && m_fixed) continue;
+      if(m_border[v]) {
+        s[o] = dot(g[v], m_frame[v][0]);
+        s[o + 1] = dot(g[v], m_frame[v][1]);
+      } else {
+        s[o] = g[v][0]; s[o + 1] = g[v][1]; s[o + 2] = g[v][2];
+      }
+    }
+  }
+  /// The inverse of the block diagonal (3×3 per vertex, projected on the
+  /// frame), with λ·(its trace / size) added: the preconditioner.
+  void block_inverse(const std::vector<std::array<double, 6> >& M, double lambda,
+                     std::vector<std::array<double, 9> >& inv) const
+  {
+    inv.resize(m_offset.size());
+    for(std::size_t v = 0; v < m_offset.size(); ++v) {
+      const std::array<double, 6>& m = M[v]; // xx yy zz xy xz yz
+      if(m_border[v] && m_fixed) continue;
+      Eigen::Matrix3d A;
+      A << m[0], m[3], m[4], m[3], m[1], m[5], m[4], m[5], m[2];
+      if(m_border[v]) {
+        Eigen::Matrix<double, 3, 2> F;
+        for(int k = 0; k < 2; ++k)
+          for(int c = 0; c < 3; ++c) F(c, k) = m_frame[v][std::size_t(k)][std::size_t(c)];
+        Eigen::Matrix2d B = F.transpose() * A * F;
+        const double reg = lambda * (std::max)(B.trace() / 2, 1e-300);
+        B(0, 0) += reg; B(1, 1) += reg;
+        const Eigen::Matrix2d Bi = B.inverse();
+        inv[v] = {{ Bi(0, 0), Bi(0, 1), Bi(1, 1), 0, 0, 0, 0, 0, 0 }};
+      } else {
+        const double reg = lambda * (std::max)(A.trace() / 3, 1e-300);
+        A(0, 0) += reg; A(1, 1) += reg; A(2, 2) += reg;
+        const Eigen::Matrix3d Ai = A.inverse();
+        for(int i = 0; i < 3; ++i)
+          for(int j = 0; j < 3; ++j) inv[v][std::size_t(3 * i + j)] = Ai(i, j);
+      }
+    }
+  }
+  void apply_block(const std::vector<std::array<double, 9> >& inv, const Eigen::VectorXd& r, Eigen::VectorXd& z) const
+  {
+    z.resize(m_n);
+    for(std::size_t v = 0; v < m_offset.size(); ++v) {
+      const int o = m_offset[v];
+      const std::array<double, 9>& a = inv[v];
+      if(m_border[v] && m_fixed) continue;
+      if(m_border[v]) {
+        z[o] = a[0] * r[o] + a[1] * r[o + 1];
+        z[o + 1] = a[1] * r[o] + a[2] * r[o + 1];
+      } else {
+        for(int i = 0; i < 3; ++i) z[o + i] = a[std::size_t(3 * i)] * r[o] + a[std::size_t(3 * i + 1)] * r[o + 1] + a[std::size_t(3 * i + 2)] * r[o + 2];
+      }
+    }
+  }
+  /// Projected block diagonal entries times λ (the regularisation added to H).
+  void apply_regularization(const std::vector<std::array<double, 6> >& M, double lambda, const Eigen::VectorXd& s,
+                            Eigen::VectorXd& y) const
+  {
+    for(std::size_t v = 0; v < m_offset.size(); ++v) {
+      const int o = m_offset[v];
+      const std::array<double, 6>& m = M[v];
+      const double tr = m[0] + m[1] + m[2];
+      if(m_border[v] && m_fixed) continue;
+      if(m_border[v]) {
+        // trace of FᵀAF ≈ tr(A) − nᵀAn; the scale matters, not the exact value
+        const double reg = lambda * tr / 3;
+        y[o] += reg * s[o]; y[o + 1] += reg * s[o + 1];
+      } else {
+        const double reg = lambda * tr / 3;
+        y[o] += reg * s[o]; y[o + 1] += reg * s[o + 1]; y[o + 2] += reg * s[o + 2];
+      }
+    }
+  }
+  bool on_border(std::size_t v) const { return m_border[v] != 0; }
+
+private:
+  std::vector<int> m_offset;
+  std::vector<char> m_border;
+  std::vector<std::array<Vec3, 2> > m_frame;
+  bool m_fixed = false;
+  int m_n = 0;
+};
+
+/// Border triangles that the exact predicate does not find positive seen
+/// from the centre: orientation(O, a, b, c) ≠ POSITIVE.
+inline std::size_t count_bad_border_faces(const std::vector<Vec3>& x, const std::vector<std::array<int, 3> >& faces)
+{
+  std::size_t n = 0;
+  const Vec3 o = {{ 0, 0, 0 }};
+  for(const auto& f : faces)
+    if(exact_tet_orientation(o, x[std::size_t(f[0])], x[std::size_t(f[1])], x[std::size_t(f[2])]) != POSITIVE) ++n;
+  return n;
+}
+
+/// Six times the signed volumes of all tets (doubles).
+inline void tet_dets(const std::vector<Vec3>& x, const std::vector<Tet>& tets, std::vector<double>& u)
+{
+  u.resize(tets.size());
+  for(std::size_t t = 0; t < tets.size(); ++t) {
+    const Tet& k = tets[t];
+    u[t] = tet_det(x[std::size_t(k[0])], x[std::size_t(k[1])], x[std::size_t(k[2])], x[std::size_t(k[3])]);
+  }
+}
+
+/// Runs the flow on positions `x` (border points on the unit sphere) until
+/// D_vol − 2 ≤ tolerance (and the levels' shares within theirs), a
+/// plateau, a stall or the cap. x must be positive everywhere by the exact
+/// predicate; it stays so (and so do the border triangles seen from the
+/// centre with `S.star_shaped_border`).
+inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vector<Tet>& tets,
+                                           const std::vector<char>& on_border,
+                                           const std::vector<std::array<int, 3> >& border_faces,
+                                           const std::vector<double>& target,
+                                           const Volume_flow_settings& S,
+                                           std::vector<Volume_iteration>* history = nullptr)
+{
+  typedef std::chrono::steady_clock Clock;
+  const Clock::time_point start = Clock::now();
+  const double eps = 0;
+  const std::size_t V = x.size(), T = tets.size();
+  Volume_flow_outcome out;
+  Volume_energy energy(target);
+  Volume_dofs dofs(on_border, false);
+  std::vector<double> u, dE, w, u_trial;
+  std::vector<std::array<Vec3, 4> > grad(T); // ∂(6u)/∂x_k per tet
+  std::vector<Vec3> gv(V), d, x_trial(V), hv;
+  std::vector<std::array<double, 6> > M(V);
+  std::vector<std::array<double, 9> > Minv;
+  Eigen::VectorXd g, s, r, z, p, q;
+  tet_dets(x, tets, u);
+  double E = energy.value(u, eps);
+  double lambda = 1e-3; // Levenberg–Marquardt
+  std::size_t flat = 0;
+  for(std::size_t it = 0;; ++it) {
+    if(E - 2 <= S.tolerance && level_share_error(S.level, S.level_share, u) <= S.share_tolerance) {
+      out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED;
+      break;
+    }
+    if(it >= S.max_iterations) { out.stop_reason = Discrete_lie_flow_stop_reason::ITERATION_CAP; break; }
+    dofs.update_frames(x);
+    energy.derivatives(u, eps, dE, w);
+    // Gradient and the Gauss–Newton blocks.
+    std::fill(gv.begin(), gv.end(), Vec3{{ 0, 0, 0 }});
+    std::fill(M.begin(), M.end(), std::array<double, 6>{{ 0, 0, 0, 0, 0, 0 }});
+    for(std::size_t t = 0; t < T; ++t) {
+      const Tet& k = tets[t];
+      const Vec3& a = x[std::size_t(k[0])];
+      const Vec3 e1 = sub(x[std::size_t(k[1])], a), e2 = sub(x[std::size_t(k[2])], a), e3 = sub(x[std::size_t(k[3])], a);
+      std::array<Vec3, 4>& G = grad[t];
+      G[1] = cross(e2, e3);
+      G[2] = cross(e3, e1);
+      G[3] = cross(e1, e2);
+      for(int c = 0; c < 3; ++c) G[0][std::size_t(c)] = -(G[1][std::size_t(c)] + G[2][std::size_t(c)] + G[3][std::size_t(c)]);
+      for(int j = 0; j < 4; ++j) {
+        const Vec3& h = G[std::size_t(j)];
+        Vec3& acc = gv[std::size_t(k[std::size_t(j)])];
+        std::array<double, 6>& m = M[std::size_t(k[std::size_t(j)])];
+        for(int c = 0; c < 3; ++c) acc[std::size_t(c)] += dE[t] * h[std::size_t(c)];
+        m[0] += w[t] * h[0] * h[0]; m[1] += w[t] * h[1] * h[1]; m[2] += w[t] * h[2] * h[2];
+        m[3] += w[t] * h[0] * h[1]; m[4] += w[t] * h[0] * h[2]; m[5] += w[t] * h[1] * h[2];
+      }
+    }
+    dofs.restrict(gv, g);
+    // H s = Σ_t w_t G_t (G_t · s) + λ·diag: preconditioned conjugate gradients from 0.
+    auto apply = [&](const Eigen::VectorXd& in, Eigen::VectorXd& y) {
+      dofs.expand(in, d);
+      hv.assign(V, Vec3{{ 0, 0, 0 }});
+      for(std::size_t t = 0; t < T; ++t) {
+        const Tet& k = tets[t];
+        const std::array<Vec3, 4>& G = grad[t];
+        double y_t = 0;
+        for(int j = 0; j < 4; ++j) y_t += dot(G[std::size_t(j)], d[std::size_t(k[std::size_t(j)])]);
+        y_t *= w[t];
+        for(int j = 0; j < 4; ++j) {
+          Vec3& o = hv[std::size_t(k[std::size_t(j)])];
+          const Vec3& h = G[std::size_t(j)];
+          o[0] += y_t * h[0]; o[1] += y_t * h[1]; o[2] += y_t * h[2];
+        }
+      }
+      dofs.restrict(hv, y);
+      dofs.apply_regularization(M, lambda, in, y);
+    };
+    dofs.block_inverse(M, lambda, Minv);
+    const int n = dofs.size();
+    s = Eigen::VectorXd::Zero(n);
+    r = -g;
+    dofs.apply_block(Minv, r, z);
+    p = z;
+    double rz = r.dot(z);
+    const double r0 = r.norm();
+    std::size_t cg = 0;
+    for(; cg < S.cg_max_iterations && r.norm() > S.cg_tolerance * r0; ++cg) {
+      apply(p, q);
+      const double pq = p.dot(q);
+      if(!(pq > 0)) break;
+      const double alpha = rz / pq;
+      s += alpha * p;
+      r -= alpha * q;
+      dofs.apply_block(Minv, r, z);
+      const double rz_new = r.dot(z);
+      p = z + (rz_new / rz) * p;
+      rz = rz_new;
+    }
+    out.cg_iterations += cg;
+    if(cg == 0 || !s.allFinite()) {
+      // No curvature information: the preconditioned gradient.
+      dofs.apply_block(Minv, -g, s);
+    }
+    dofs.expand(s, d);
+    // Step bound: the critical cubic of every tet (the certified flow).
+    double crit = infinite_step();
+    for(std::size_t t = 0; t < T; ++t) {
+      const Tet& k = tets[t];
+      const std::size_t a = std::size_t(k[0]), b = std::size_t(k[1]), c = std::size_t(k[2]), e = std::size_t(k[3]);
+      crit = (std::min)(crit, critical_step_tet(x[a], x[b], x[c], x[e], d[a], d[b], d[c], d[e]));
+    }
+    // The border triangles seen from the centre (re-normalising the points
+    // scales them by positive factors: the sign of det[a, b, c] is kept).
+    if(S.star_shaped_border)
+      for(const auto& f : border_faces) {
+        const std::size_t a = std::size_t(f[0]), b = std::size_t(f[1]), c = std::size_t(f[2]);
+        crit = (std::min)(crit, critical_step_sphere(x[a], x[b], x[c], d[a], d[b], d[c]));
+      }
+    // No vertex moves by more than a tenth of the ball's radius in one step.
+    double dmax = 0;
+    for(const Vec3& e : d) dmax = (std::max)(dmax, norm3(e));
+    double step = (std::min)((std::min)(1., S.mu * crit), dmax > 0 ? 0.1 / dmax : 1.);
+    bool accepted = false;
+    double E_new = E;
+    for(int tries = 0; tries < 40 && step > 0; ++tries, step *= 0.5) {
+      for(std::size_t v = 0; v < V; ++v) {
+        Vec3 y = {{ x[v][0] + step * d[v][0], x[v][1] + step * d[v][1], x[v][2] + step * d[v][2] }};
+        x_trial[v] = on_border[v] ? normalized(y) : y;
+      }
+      tet_dets(x_trial, tets, u_trial);
+      E_new = energy.value(u_trial, eps);
+      if(!(E_new < E)) continue;
+      if((count_bad_tets(x_trial, tets).not_positive() != 0 ||
+                       (S.star_shaped_border && count_bad_border_faces(x_trial, border_faces) != 0))) {
+        ++out.rejected_by_exact_check;
+        continue;
+      }
+      accepted = true;
+      break;
+    }
+    if(!accepted) {
+      if(lambda < 1e6) { lambda *= 10; continue; } // a more gradient-like direction first
+      out.stop_reason = Discrete_lie_flow_stop_reason::STALLED;
+      break;
+    }
+    // A short step: the quadratic model is poor there; lean towards the
+    // (preconditioned) gradient.
+    lambda = step >= 1 ? (std::max)(lambda / 3, 1e-8) : (std::min)(lambda * (step < 0.1 ? 10 : 2), 1e6);
+    x.swap(x_trial);
+    u.swap(u_trial);
+    const double progress = (E - E_new) / (std::max)(E_new - 2, 1e-300);
+    ++out.iterations;
+    E = E_new;
+    if(history || S.callback) {
+      Volume_iteration I;
+      I.iteration = out.iterations;
+      I.step = step;
+      I.critical_step = crit;
+      I.d_vol = E;
+      I.cg_iterations = cg;
+      I.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      if(history) history->push_back(I);
+      if(S.callback && !S.callback(I)) { out.stop_reason = Discrete_lie_flow_stop_reason::INTERRUPTED; break; }
+    }
+    flat = progress < S.plateau ? flat + 1 : 0;
+    if(flat >= S.plateau_window) { out.stop_reason = Discrete_lie_flow_stop_reason::PLATEAU; break; }
+  }
+  out.energy = E;
+  return out;
+}
+
+} // namespace dlf
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

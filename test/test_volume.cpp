@@ -1,0 +1,413 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The volumetric Discrete Lie Flow: maps of tetrahedral meshes of balls into
+// the unit ball. Every property of a result is recomputed here from the
+// output points (exact orientation with an exact-constructions kernel, norms,
+// D_vol and shares in long double, the image's volume from its border by the
+// divergence theorem); the tets' critical cubic against bisection on the
+// exact predicate; the Medit reader's errors; inputs that are not balls.
+
+#include <gtest/gtest.h>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_volume_3.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_medit.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_untangle.h>
+
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+namespace D = CGAL::Surface_mesh_parameterization::internal::dlf;
+
+namespace {
+
+typedef CGAL::Simple_cartesian<double>::Point_3 Point;
+typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
+
+struct Tet_mesh
+{
+  std::vector<Point> points;
+  std::vector<std::array<int, 4> > tets;
+};
+
+/// The n×n×n grid of unit cubes, each cut into the six tets around its main
+/// diagonal (Kuhn), positively oriented; `keep(i, j, k)` selects the cubes.
+/// Vertices of no kept cube are left out.
+template <class Keep>
+Tet_mesh cube_grid(int n, Keep keep, double warp = 0)
+{
+  Tet_mesh m;
+  std::vector<int> id((n + 1) * (n + 1) * (n + 1), -1);
+  auto vertex = [&](int i, int j, int k) {
+    int& v = id[std::size_t((i * (n + 1) + j) * (n + 1) + k)];
+    if(v < 0) {
+      v = int(m.points.size());
+      // A smooth warp, so that the input's tets differ in volume.
+      const double x = i, y = j, z = k;
+      m.points.emplace_back(x + warp * std::sin(y), y + warp * std::sin(z), z + warp * x * x / n);
+    }
+    return v;
+  };
+  const int perms[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 } };
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+      for(int k = 0; k < n; ++k) {
+        if(!keep(i, j, k)) continue;
+        for(const auto& p : perms) {
+          int c[3] = { i, j, k };
+          std::array<int, 4> t;
+          t[0] = vertex(c[0], c[1], c[2]);
+          for(int s = 0; s < 3; ++s) {
+            ++c[p[s]];
+            t[std::size_t(s + 1)] = vertex(c[0], c[1], c[2]);
+          }
+          if(CGAL::orientation(m.points[std::size_t(t[0])], m.points[std::size_t(t[1])], m.points[std::size_t(t[2])],
+                               m.points[std::size_t(t[3])]) != CGAL::POSITIVE)
+            std::swap(t[2], t[3]);
+          m.tets.push_back(t);
+        }
+      }
+  return m;
+}
+
+Tet_mesh full_grid(int n, double warp = 0) { return cube_grid(n, [](int, int, int) { return true; }, warp); }
+
+Epeck::Point_3 exact(const Point& p) { return Epeck::Point_3(p.x(), p.y(), p.z()); }
+
+long double det6(const Point& a, const Point& b, const Point& c, const Point& d)
+{
+  const long double e[3] = { (long double)b.x() - a.x(), (long double)b.y() - a.y(), (long double)b.z() - a.z() };
+  const long double f[3] = { (long double)c.x() - a.x(), (long double)c.y() - a.y(), (long double)c.z() - a.z() };
+  const long double g[3] = { (long double)d.x() - a.x(), (long double)d.y() - a.y(), (long double)d.z() - a.z() };
+  return e[0] * (f[1] * g[2] - f[2] * g[1]) - e[1] * (f[0] * g[2] - f[2] * g[0]) + e[2] * (f[0] * g[1] - f[1] * g[0]);
+}
+
+/// Checks a result from scratch: every tet positive (exact constructions
+/// kernel), border points on the unit sphere, interior points inside, D_vol
+/// and the per-density shares recomputed; returns D_vol.
+long double check_ball_map(const Tet_mesh& m, const std::vector<Point>& x, const std::vector<double>& density,
+                           const SMP::Discrete_lie_flow_volume_report& R)
+{
+  EXPECT_EQ(x.size(), m.points.size());
+  for(std::size_t t = 0; t < m.tets.size(); ++t) {
+    const auto& k = m.tets[t];
+    EXPECT_EQ(CGAL::orientation(exact(x[std::size_t(k[0])]), exact(x[std::size_t(k[1])]), exact(x[std::size_t(k[2])]),
+                                exact(x[std::size_t(k[3])])), CGAL::POSITIVE) << "tet " << t;
+  }
+  D::Ball_topology topo;
+  std::vector<D::Vec3> xyz;
+  for(const Point& p : m.points) xyz.push_back({{ p.x(), p.y(), p.z() }});
+  std::string message;
+  EXPECT_EQ(D::check_ball(xyz, m.tets, topo, message), SMP::OK) << message;
+  for(std::size_t v = 0; v < x.size(); ++v) {
+    const double r = std::sqrt(x[v].x() * x[v].x() + x[v].y() * x[v].y() + x[v].z() * x[v].z());
+    if(topo.on_border[v]) EXPECT_NEAR(r, 1., 1e-12) << "border vertex " << v;
+    else EXPECT_LT(r, 1.) << "interior vertex " << v;
+  }
+  long double T = 0, U = 0, K = 0;
+  std::vector<long double> target(m.tets.size()), u(m.tets.size());
+  for(std::size_t t = 0; t < m.tets.size(); ++t) {
+    const auto& k = m.tets[t];
+    target[t] = (density.empty() ? 1.L : density[t]) *
+                det6(m.points[std::size_t(k[0])], m.points[std::size_t(k[1])], m.points[std::size_t(k[2])], m.points[std::size_t(k[3])]);
+    u[t] = det6(x[std::size_t(k[0])], x[std::size_t(k[1])], x[std::size_t(k[2])], x[std::size_t(k[3])]);
+    T += target[t];
+    U += u[t];
+  }
+  for(std::size_t t = 0; t < m.tets.size(); ++t) K += (target[t] / T) * (target[t] / T) / u[t];
+  const long double d_vol = 1 + U * K;
+  EXPECT_NEAR(double(d_vol), R.final_d_vol, 1e-9);
+  // The image's volume two ways: the tets' sum and the border's flux.
+  long double flux = 0;
+  for(const auto& f : topo.border_faces) {
+    const Point &a = x[std::size_t(f[0])], &b = x[std::size_t(f[1])], &c = x[std::size_t(f[2])];
+    flux += det6(Point(0, 0, 0), a, b, c);
+  }
+  EXPECT_NEAR(double(U / 6), double(flux / 6), 1e-12);
+  EXPECT_NEAR(R.volume, double(U / 6), 1e-12);
+  EXPECT_LT(U / 6, 4 * std::acos(-1.L) / 3);
+  return d_vol;
+}
+
+TEST(Volume, CubeGridIntoBallIsCertifiedAndVolumePreserving)
+{
+  const Tet_mesh m = full_grid(6, 0.2);
+  SMP::Discrete_lie_flow_volume_parameterizer_3<> dlf;
+  std::vector<Point> x;
+  ASSERT_EQ(dlf.parameterize(m.points, m.tets, x), SMP::OK) << dlf.report().message;
+  const auto& R = dlf.report();
+  EXPECT_TRUE(R.converged());
+  EXPECT_TRUE(R.start_certified);
+  EXPECT_EQ(R.inverted_tets, 0u);
+  EXPECT_EQ(R.flat_tets, 0u);
+  EXPECT_EQ(R.tets, m.tets.size());
+  EXPECT_EQ(R.border_vertices, std::size_t(6 * 36 + 2));
+  const long double d = check_ball_map(m, x, {}, R);
+  EXPECT_LE(d, 2.01L);
+  EXPECT_LT(R.final_d_vol, R.initial_d_vol);
+}
+
+TEST(Volume, StarShapedImageVolumeApproachesTheBallAsTheBorderIsRefined)
+{
+  // With the border kept star-shaped the image is a polytope inscribed in
+  // the sphere whose border the centre sees once: its volume grows towards
+  // the ball's as the border is refined.
+  double previous = 0;
+  for(int n : { 2, 3, 5 }) {
+    const Tet_mesh m = full_grid(n);
+    SMP::Discrete_lie_flow_volume_options o;
+    o.star_shaped_border = true;
+    SMP::Discrete_lie_flow_volume_parameterizer_3<> dlf(o);
+    std::vector<Point> x;
+    ASSERT_EQ(dlf.parameterize(m.points, m.tets, x), SMP::OK) << dlf.report().message;
+    check_ball_map(m, x, {}, dlf.report());
+    EXPECT_EQ(dlf.report().inverted_border_faces, 0u);
+    EXPECT_LT(dlf.report().final_d_vol, dlf.report().initial_d_vol);
+    EXPECT_GT(dlf.report().volume, previous) << n;
+    previous = dlf.report().volume;
+  }
+  const double ball = 4 * std::acos(-1.) / 3;
+  EXPECT_LT(ball - previous, 0.1 * ball);
+}
+
+/// The Mesh_3 tetrahedral mesh of CGAL's sphere.off in test/data.
+Tet_mesh sphere_mesh()
+{
+  std::ifstream in(std::string(DLF_TEST_DATA_DIR) + "/sphere_tets.mesh");
+  D::Medit_tet_mesh medit;
+  std::string error;
+  EXPECT_TRUE(D::read_medit(in, medit, error)) << error;
+  Tet_mesh m;
+  for(const auto& p : medit.points) m.points.emplace_back(p[0], p[1], p[2]);
+  m.tets = medit.tets;
+  return m;
+}
+
+TEST(Volume, Mesh3SphereIsVolumePreservingAndRegionsGetTheirShares)
+{
+  const Tet_mesh m = sphere_mesh();
+  ASSERT_GT(m.tets.size(), 1000u);
+  for(double factor : { 1., 4., 0.25 }) {
+    // The region: the tets whose centroid lies in the ball of radius 0.5 around (0, 0, 0.5).
+    std::vector<double> rho(m.tets.size(), 1.);
+    for(std::size_t t = 0; t < m.tets.size(); ++t) {
+      double c[3] = { 0, 0, 0 };
+      for(int v : m.tets[t]) {
+        c[0] += m.points[std::size_t(v)].x() / 4;
+        c[1] += m.points[std::size_t(v)].y() / 4;
+        c[2] += m.points[std::size_t(v)].z() / 4;
+      }
+      if(c[0] * c[0] + c[1] * c[1] + (c[2] - 0.5) * (c[2] - 0.5) < 0.25) rho[t] = factor;
+    }
+    SMP::Discrete_lie_flow_volume_options options;
+    if(factor != 1.) options.tet_density = rho;
+    SMP::Discrete_lie_flow_volume_parameterizer_3<> dlf(options);
+    std::vector<Point> x;
+    ASSERT_EQ(dlf.parameterize(m.points, m.tets, x), SMP::OK) << dlf.report().message;
+    EXPECT_TRUE(dlf.report().converged()) << factor;
+    EXPECT_TRUE(dlf.report().start_certified);
+    const long double d = check_ball_map(m, x, factor != 1. ? rho : std::vector<double>(), dlf.report());
+    EXPECT_LE(d, 2.01L);
+    if(factor == 1.) continue;
+    long double in = 0, all = 0, target_in = 0, target_all = 0;
+    for(std::size_t t = 0; t < m.tets.size(); ++t) {
+      const auto& k = m.tets[t];
+      const long double u = det6(x[std::size_t(k[0])], x[std::size_t(k[1])], x[std::size_t(k[2])], x[std::size_t(k[3])]);
+      const long double a = rho[t] * det6(m.points[std::size_t(k[0])], m.points[std::size_t(k[1])],
+                                          m.points[std::size_t(k[2])], m.points[std::size_t(k[3])]);
+      all += u; target_all += a;
+      if(rho[t] != 1.) { in += u; target_in += a; }
+    }
+    EXPECT_NEAR(double((in / all) / (target_in / target_all)), 1., 0.01) << factor;
+    ASSERT_EQ(dlf.report().shares.size(), 2u);
+    EXPECT_LE(dlf.report().share_error_max, 0.01);
+  }
+}
+
+TEST(Volume, CriticalStepOfATetMatchesBisectionOnTheExactPredicate)
+{
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> U(-1, 1);
+  int checked = 0;
+  for(int trial = 0; trial < 300; ++trial) {
+    std::array<D::Vec3, 4> p, d;
+    for(auto& q : p) q = {{ U(rng), U(rng), U(rng) }};
+    for(auto& q : d) q = {{ U(rng), U(rng), U(rng) }};
+    if(D::exact_tet_orientation(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE) std::swap(p[2], p[3]);
+    const double lambda = D::critical_step_tet(p[0], p[1], p[2], p[3], d[0], d[1], d[2], d[3]);
+    auto positive_at = [&](double s) {
+      std::array<D::Vec3, 4> q;
+      for(int k = 0; k < 4; ++k)
+        for(int c = 0; c < 3; ++c) q[std::size_t(k)][std::size_t(c)] = p[std::size_t(k)][std::size_t(c)] + s * d[std::size_t(k)][std::size_t(c)];
+      return D::exact_tet_orientation(q[0], q[1], q[2], q[3]) == CGAL::POSITIVE;
+    };
+    // Bisection on the exact predicate over [0, 100]: the first sign change.
+    // Sampling first, so that a tet that dips below and comes back is found.
+    double lo = 0, hi = -1;
+    for(int s = 1; s <= 20000; ++s)
+      if(!positive_at(s * 0.005)) { lo = (s - 1) * 0.005; hi = s * 0.005; break; }
+    if(hi < 0) {
+      EXPECT_TRUE(lambda > 100) << trial;
+      continue;
+    }
+    for(int it = 0; it < 80; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (positive_at(mid) ? lo : hi) = mid;
+    }
+    EXPECT_NEAR(lambda, lo, 1e-9 * (1 + lo)) << trial;
+    ++checked;
+  }
+  EXPECT_GT(checked, 50);
+}
+
+TEST(Volume, UntanglingMakesAFoldedMapPositive)
+{
+  const Tet_mesh m = full_grid(3);
+  SMP::Discrete_lie_flow_volume_parameterizer_3<> dlf;
+  std::vector<Point> x;
+  ASSERT_EQ(dlf.parameterize(m.points, m.tets, x), SMP::OK);
+  std::vector<D::Vec3> y;
+  for(const Point& p : x) y.push_back({{ p.x(), p.y(), p.z() }});
+  std::vector<D::Vec3> xyz;
+  for(const Point& p : m.points) xyz.push_back({{ p.x(), p.y(), p.z() }});
+  D::Ball_topology topo;
+  std::string message;
+  ASSERT_EQ(D::check_ball(xyz, m.tets, topo, message), SMP::OK);
+  // Throw two interior vertices across their neighbours.
+  int moved = 0;
+  for(std::size_t v = 0; v < y.size() && moved < 2; ++v)
+    if(!topo.on_border[v]) {
+      y[v] = {{ -0.6 * y[v][0] + 0.3, -0.6 * y[v][1], -0.6 * y[v][2] - 0.2 }};
+      ++moved;
+    }
+  ASSERT_EQ(moved, 2);
+  const D::Tet_orientation_counts before = D::count_bad_tets(y, m.tets);
+  ASSERT_GT(before.negative, 0u);
+  std::vector<double> target(m.tets.size(), 1.);
+  const D::Untangle_outcome out = D::untangle_volume(y, m.tets, topo.on_border, topo.border_faces, xyz, target, 2000, nullptr);
+  EXPECT_TRUE(out.success);
+  EXPECT_EQ(D::count_bad_tets(y, m.tets).not_positive(), 0u);
+  EXPECT_EQ(D::count_bad_border_faces(y, topo.border_faces), 0u);
+  for(std::size_t v = 0; v < y.size(); ++v)
+    if(topo.on_border[v]) EXPECT_NEAR(D::norm3(y[v]), 1., 1e-12);
+}
+
+int check_code(const Tet_mesh& m, std::string& message)
+{
+  SMP::Discrete_lie_flow_volume_parameterizer_3<> dlf;
+  std::vector<Point> x;
+  const int code = dlf.parameterize(m.points, m.tets, x);
+  message = dlf.report().message;
+  EXPECT_TRUE(x.empty());
+  return code;
+}
+
+TEST(Volume, InputsThatAreNotBallsOrNotValidAreRefused)
+{
+  std::string msg;
+  {
+    Tet_mesh m = full_grid(2);
+    std::swap(m.tets[5][0], m.tets[5][1]);
+    EXPECT_EQ(check_code(m, msg), SMP::ERROR_DEGENERATE_INPUT);
+    EXPECT_NE(msg.find("tetrahedron 5 is inverted"), std::string::npos) << msg;
+  }
+  {
+    Tet_mesh m = full_grid(2);
+    m.points[std::size_t(m.tets[3][2])] = m.points[std::size_t(m.tets[3][0])];
+    EXPECT_EQ(check_code(m, msg), SMP::ERROR_DEGENERATE_INPUT) << msg;
+  }
+  {
+    Tet_mesh m = full_grid(2);
+    m.tets[0][1] = 1000;
+    EXPECT_EQ(check_code(m, msg), SMP::ERROR_WRONG_PARAMETER);
+    EXPECT_NE(msg.find("tetrahedron 0 refers to vertex 1000"), std::string::npos) << msg;
+  }
+  {
+    Tet_mesh m = full_grid(2);
+    m.points.emplace_back(5, 5, 5);
+    EXPECT_EQ(check_code(m, msg), SMP::ERROR_WRONG_PARAMETER);
+    EXPECT_NE(msg.find("belongs to no tetrahedron"), std::string::npos) << msg;
+  }
+  { // a hollow cube: two border components
+    const Tet_mesh m = cube_grid(3, [](int i, int j, int k) { return !(i == 1 && j == 1 && k == 1); });
+    EXPECT_EQ(check_code(m, msg), SMP::ERROR_NO_TOPOLOGICAL_BALL);
+    EXPECT_NE(msg.find("2 connected components"), std::string::npos) << msg;
+  }
+  { // a ring: the border is a torus
+    const Tet_mesh m = cube_grid(3, [](int i, int j, int) { return !(i == 1 && j == 1); });
+    EXPECT_EQ(check_code(m, msg), SMP::ERROR_NO_TOPOLOGICAL_BALL);
+    EXPECT_NE(msg.find("genus 1"), std::string::npos) << msg;
+  }
+  { // two cubes touching at a corner: the border pinches there
+    const Tet_mesh m = cube_grid(2, [](int i, int j, int k) { return (i == 0 && j == 0 && k == 0) || (i == 1 && j == 1 && k == 1); });
+    EXPECT_EQ(check_code(m, msg), SMP::ERROR_NO_TOPOLOGICAL_BALL);
+    EXPECT_NE(msg.find("not a manifold surface at vertex"), std::string::npos) << msg;
+  }
+  { // a duplicated tet: a triangle in three tets or a repeated tet
+    Tet_mesh m = full_grid(2);
+    m.tets.push_back(m.tets[0]);
+    EXPECT_EQ(check_code(m, msg), SMP::ERROR_NO_TOPOLOGICAL_BALL) << msg;
+  }
+  {
+    const Tet_mesh m = full_grid(2);
+    SMP::Discrete_lie_flow_volume_options o;
+    o.tet_density.assign(m.tets.size(), 1.);
+    o.tet_density[7] = -1;
+    SMP::Discrete_lie_flow_volume_parameterizer_3<> dlf(o);
+    std::vector<Point> x;
+    EXPECT_EQ(dlf.parameterize(m.points, m.tets, x), SMP::ERROR_INVALID_DENSITY);
+    EXPECT_NE(dlf.report().message.find("tetrahedron 7"), std::string::npos);
+  }
+}
+
+bool medit_error(const std::string& text, std::string& error)
+{
+  std::istringstream in(text);
+  D::Medit_tet_mesh m;
+  return !D::read_medit(in, m, error);
+}
+
+TEST(Volume, MeditReaderNamesTheLineOfAnError)
+{
+  const std::string head = "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\n";
+  std::string e;
+  EXPECT_TRUE(medit_error(head + "Tetrahedra\n1\n1 2 3 5 1\nEnd\n", e));
+  EXPECT_EQ(e, "line 11: tetrahedron 1 of 1 refers to vertex 5, out of range 1..4");
+  EXPECT_TRUE(medit_error(head + "Tetrahedra\n1\n1 2 x 4 1\nEnd\n", e));
+  EXPECT_NE(e.find("line 11: expected vertex index 3 of tetrahedron 1 of 1, found 'x'"), std::string::npos) << e;
+  EXPECT_TRUE(medit_error("MeshVersionFormatted 1\nDimension 3\nVertices\n2\n0 0 0 1\n1 nan 0 1\n", e));
+  EXPECT_NE(e.find("line 6:"), std::string::npos) << e;
+  EXPECT_TRUE(medit_error(head + "Triangles\n1\n1 2 3 0\nEnd\n", e));
+  EXPECT_NE(e.find("no Tetrahedra section"), std::string::npos) << e;
+  EXPECT_TRUE(medit_error(head + "Pyramids\n1\n", e));
+  EXPECT_EQ(e, "line 9: unknown section 'Pyramids'");
+  EXPECT_TRUE(medit_error("Dimension 2\n", e));
+  EXPECT_NE(e.find("line 1: Dimension 2"), std::string::npos) << e;
+  EXPECT_TRUE(medit_error(head + "Tetrahedra\n2\n1 2 3 4 1\n", e));
+  EXPECT_NE(e.find("unexpected end of file"), std::string::npos) << e;
+  // A good file with skipped sections and a comment, then a round trip.
+  std::istringstream in(head + "# a comment\nCorners\n1\n1\nTriangles\n1\n1 2 3 7\nTetrahedra\n1\n1 2 3 4 3\nEnd\n");
+  D::Medit_tet_mesh m;
+  ASSERT_TRUE(D::read_medit(in, m, e)) << e;
+  ASSERT_EQ(m.tets.size(), 1u);
+  EXPECT_EQ(m.tet_refs[0], 3);
+  m.points[1][0] = 0.1 + 1e-17 * 3; // a double that needs 17 digits
+  std::ostringstream out;
+  D::write_medit(out, m.points, m.tets, m.tet_refs, {});
+  std::istringstream back(out.str());
+  D::Medit_tet_mesh m2;
+  ASSERT_TRUE(D::read_medit(back, m2, e)) << e;
+  EXPECT_EQ(m2.points, m.points);
+  EXPECT_EQ(m2.tets, m.tets);
+  EXPECT_EQ(m2.tet_refs, m.tet_refs);
+}
+
+} // namespace
