@@ -490,7 +490,8 @@ TEST(Sphere_flow, OpeningSweepsLowerTheConeDArea)
     EXPECT_LT(E, E_prev) << "sweep " << sweep;
     E_prev = E;
   }
-  EXPECT_LT(E_prev, 0.9 * E0) << "the crowded cap was not opened: " << E0 << " -> " << E_prev;
+  // D_area's excess over its minimum 2, most of it in the cap: a tenth of it gone.
+  EXPECT_LT(E_prev - 2, 0.9 * (E0 - 2)) << "the crowded cap was not opened: " << E0 << " -> " << E_prev;
   EXPECT_EQ(exact_sphere_signs(p, m.faces).pos, m.faces.size());
   for(std::size_t v = 0; v < p.size(); ++v) {
     if(!active_mark[v]) EXPECT_EQ(p[v], before[v]) << "vertex " << v << " is not in the swept set";
