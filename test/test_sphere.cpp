@@ -434,6 +434,71 @@ TEST(Sphere_flow, PolishGradientMatchesFiniteDifferences)
   }
 }
 
+// The opening's local sweeps: with the flat areas' weight 0 the sweeps
+// minimise the opening's energy alone (the D_area of the cone areas,
+// recomputed here from scratch with Area_barrier_energy), keep every face
+// positive by the exact predicate, leave every vertex outside the given set
+// where it was, and hand back the areas of the moved map.
+TEST(Sphere_flow, OpeningSweepsLowerTheConeDArea)
+{
+  const Index_mesh m = index_mesh(read_sphere_mesh("sphere966"));
+  // Radial projection from a point off the centre: a certified map that
+  // crowds the faces near the south pole into a small cap.
+  std::vector<V3> p;
+  for(const V3& q : m.xyz) {
+    const V3 x = D::normalized(q);
+    p.push_back(D::normalized(V3{{ x[0], x[1], x[2] + 0.8 }}));
+  }
+  ASSERT_EQ(exact_sphere_signs(p, m.faces).pos, m.faces.size());
+  std::vector<double> target(m.faces.size());
+  for(std::size_t t = 0; t < target.size(); ++t) {
+    const V3 &a = m.xyz[std::size_t(m.faces[t][0])], &b = m.xyz[std::size_t(m.faces[t][1])], &c = m.xyz[std::size_t(m.faces[t][2])];
+    target[t] = double(flat_area(a, b, c));
+  }
+  // The corners of the faces in the crowded cap and one ring around them.
+  std::vector<char> active_mark(p.size(), 0);
+  for(const Tri& t : m.faces) {
+    bool low = false;
+    for(int k = 0; k < 3; ++k) low = low || p[std::size_t(t[k])][2] < -0.9;
+    if(low) for(int k = 0; k < 3; ++k) active_mark[std::size_t(t[k])] = 1;
+  }
+  std::vector<std::size_t> active;
+  for(std::size_t v = 0; v < p.size(); ++v) if(active_mark[v]) active.push_back(v);
+  ASSERT_GT(active.size(), 10u);
+  ASSERT_LT(active.size(), p.size() / 4);
+
+  const D::Area_barrier_energy cone_d_area(target);
+  std::vector<double> flat, cone;
+  D::signed_areas_sphere(p, m.faces, flat);
+  D::cone_areas_sphere(p, m.faces, cone);
+  const double E0 = cone_d_area.value(cone);
+  const D::Vertex_faces around(p.size(), m.faces);
+  const std::vector<V3> before = p;
+  double E_prev = E0;
+  for(int sweep = 0; sweep < 5; ++sweep) {
+    const D::Relaxation_outcome r =
+      D::relax_sphere_vertices(m.faces, around, D::Weighted_area_energy(target, 0), 1, 0.8, active, p, flat, cone, 0);
+    EXPECT_GT(r.moved, 0u);
+    std::vector<double> flat_now, cone_now;
+    D::signed_areas_sphere(p, m.faces, flat_now);
+    D::cone_areas_sphere(p, m.faces, cone_now);
+    for(std::size_t t = 0; t < m.faces.size(); ++t) {
+      ASSERT_NEAR(flat[t], flat_now[t], 1e-12 * flat_now[t]) << "face " << t;
+      ASSERT_NEAR(cone[t], cone_now[t], 1e-12 * cone_now[t]) << "face " << t;
+    }
+    const double E = cone_d_area.value(cone_now);
+    EXPECT_LT(E, E_prev) << "sweep " << sweep;
+    E_prev = E;
+  }
+  // D_area's excess over its minimum 2, most of it in the cap: a tenth of it gone.
+  EXPECT_LT(E_prev - 2, 0.9 * (E0 - 2)) << "the crowded cap was not opened: " << E0 << " -> " << E_prev;
+  EXPECT_EQ(exact_sphere_signs(p, m.faces).pos, m.faces.size());
+  for(std::size_t v = 0; v < p.size(); ++v) {
+    if(!active_mark[v]) EXPECT_EQ(p[v], before[v]) << "vertex " << v << " is not in the swept set";
+    EXPECT_NEAR(D::dot(p[v], p[v]), 1, 1e-12);
+  }
+}
+
 // The weighted D_area: Σ ω (r + 1/r) computed face by face in long double,
 // ≥ 2 with equality exactly at the targets; β = 0 is the area-weighted
 // energy; the running sums follow single-face changes.

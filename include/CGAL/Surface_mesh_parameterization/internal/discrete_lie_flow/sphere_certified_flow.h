@@ -97,6 +97,23 @@ struct Sphere_flow_settings
   std::size_t relaxation_sweeps = 10;
   /// Sweeps visit the corners of the faces with |log area ratio| above this (0: every vertex).
   double relaxation_threshold = 0;
+  /// Fans of needles stall the opening: the same few faces cap the Sobolev
+  /// step at 1e-6 – 1e-5 for hundreds of iterations while D_area falls by
+  /// 0.3–0.6% per step. When an opening step shorter than `crawl_step`
+  /// lowers D_area (still above `local_sweep_above`) by less than
+  /// `local_sweep_progress` (relative) and its
+  /// limiting face limited at least `local_sweep_repeats` − 1 of the last
+  /// `local_sweep_memory` steps too, `relaxation_sweeps` sweeps of the
+  /// opening's energy move the vertices within `local_sweep_rings` rings of
+  /// that face (0 memory: never). Local, so their cost is nothing beside a
+  /// step. (Fired more often, they slowed the data set's compressed starts
+  /// and the low-D_area openings of triceratops and bull: doc/sphere.md,
+  /// "Irregular meshes".)
+  std::size_t local_sweep_memory = 4;
+  std::size_t local_sweep_repeats = 3;
+  double local_sweep_progress = 0.003;
+  double local_sweep_above = 10;
+  std::size_t local_sweep_rings = 2;
   /// Levenberg–Marquardt update from the accepted step's length, not only
   /// its halvings (see `sphere_regularization()`).
   bool capped_steps_regularize = true;
@@ -132,7 +149,7 @@ public:
   Sphere_certified_flow(const Sphere_problem& P, std::vector<Vec3>& p, const Discrete_lie_flow_options& opt,
                         EigenSolver& eigen_solver, const Sphere_flow_settings& settings)
     : Flow_policy_base(stopping_rules(opt)), m_P(P), m_p(p), m_opt(opt), m_settings(settings), m_n(p.size()), m_energy(P.target),
-      m_polish_energy(P.target, settings.uniform_weight), m_kappa(settings.cone_weight), m_solver(eigen_solver),
+      m_polish_energy(P.target, settings.uniform_weight), m_cone_energy(P.target, 0), m_kappa(settings.cone_weight), m_solver(eigen_solver),
       m_newton_solver(m_newton_eigen_solver), m_eps(settings.newton_regularization), m_around(0, std::vector<Face>()),
       m_d(p.size()), m_trial(p.size()), m_levels(P.xyz, P.faces, P.target)
   {}
@@ -232,6 +249,7 @@ public:
     m_w.swap(m_w_trial);
     m_E = m_E_trial;
     if(m_polish && m_settings.relaxation_sweeps > 0) relax(out);
+    else if(!m_polish) relax_around_repeated_limiter(step, out);
     m_D = flat_d_area(m_p, m_P.faces, m_P.target);
     m_lambda_prev = step.lambda;
     out.final_d_area = m_D;
@@ -430,6 +448,48 @@ private:
     }
   }
 
+  /// The opening's local sweeps (see `Sphere_flow_settings::local_sweep_memory`).
+  void relax_around_repeated_limiter(const Flow_step& step, Flow_outcome& out)
+  {
+    const int f = step.limiting;
+    const bool repeated = f >= 0 && step.lambda < m_settings.crawl_step && m_D > m_settings.local_sweep_above &&
+                          std::size_t(std::count(m_limiters.begin(), m_limiters.end(), f)) + 1 >= m_settings.local_sweep_repeats &&
+                          m_D - flat_d_area(m_p, m_P.faces, m_P.target) < m_settings.local_sweep_progress * m_D;
+    if(m_settings.local_sweep_memory > 0) {
+      m_limiters.push_back(f);
+      if(m_limiters.size() > m_settings.local_sweep_memory) m_limiters.erase(m_limiters.begin());
+    }
+    if(!repeated || m_settings.relaxation_sweeps == 0) return;
+    if(m_around.first.size() != m_n + 1) m_around = Vertex_faces(m_n, m_P.faces);
+    const std::vector<Face>& F = m_P.faces;
+    std::vector<std::size_t> active(F[std::size_t(f)].begin(), F[std::size_t(f)].end());
+    std::vector<char> seen(m_n, 0);
+    for(std::size_t v : active) seen[v] = 1;
+    for(std::size_t ring = 0, begin = 0; ring < m_settings.local_sweep_rings; ++ring) {
+      const std::size_t end = active.size();
+      for(std::size_t i = begin; i < end; ++i)
+        for(std::size_t j = m_around.first[active[i]]; j < m_around.first[active[i] + 1]; ++j)
+          for(int k = 0; k < 3; ++k) {
+            const std::size_t w = std::size_t(F[m_around.of[j].first][k]);
+            if(!seen[w]) { seen[w] = 1; active.push_back(w); }
+          }
+      begin = end;
+    }
+    signed_areas_sphere(m_p, F, m_flat);
+    m_trial = m_p;
+    const double mu = step_fraction(m_opt);
+    for(std::size_t k = 0; k < m_settings.relaxation_sweeps; ++k) {
+      const Relaxation_outcome r = relax_sphere_vertices(F, m_around, m_cone_energy, 1, mu, active, m_p, m_flat, m_u, 0);
+      out.rejected_by_exact_check += r.refused_by_exact_check;
+      if(r.moved == 0) break;
+    }
+    m_E = evaluate(m_p, m_u, m_w); // drop the sweeps' incremental rounding
+    if(!std::isfinite(m_E)) {
+      m_p.swap(m_trial);
+      m_E = evaluate(m_p, m_u, m_w);
+    }
+  }
+
   const Sphere_problem& m_P;
   std::vector<Vec3>& m_p;
   const Discrete_lie_flow_options& m_opt;
@@ -437,6 +497,7 @@ private:
   const std::size_t m_n;
   Area_barrier_energy m_energy;
   const Weighted_area_energy m_polish_energy;
+  const Weighted_area_energy m_cone_energy; // m_energy, with the running sums of the sweeps
   const double m_kappa;
   Pattern_reusing_solver<EigenSolver> m_solver;
   EigenSolver m_newton_eigen_solver; // its own symbolic analysis: 2n unknowns
@@ -454,6 +515,7 @@ private:
   bool m_polish = false, m_force_polish = false, m_newton = false;
   double m_best_cone_D = infinite_step();
   std::size_t m_rising = 0, m_crawling = 0, m_crawling_far = 0;
+  std::vector<int> m_limiters; // the faces that limited the last opening steps
   double m_E = 0, m_E_trial = 0, m_D = 0, m_slope = 0;
   double m_lambda_prev = infinite_step();
   std::vector<double> m_mean_history;

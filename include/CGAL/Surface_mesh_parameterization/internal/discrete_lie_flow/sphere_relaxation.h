@@ -50,13 +50,15 @@ inline std::vector<std::size_t> vertices_to_relax(const std::vector<Face>& faces
 }
 
 /// One sweep over the vertices `active` of the polish energy
-/// E(u) + κ E(w) (sphere_certified_flow.h): u the flat areas, w the cone areas, E the
-/// weighted D_area `energy`. `u` and `w` must hold the areas of `p`; all
-/// three are updated.
+/// α E(u) + κ E(w) (sphere_certified_flow.h): u the flat areas, w the cone
+/// areas, E the weighted D_area `energy`, α = `flat_weight` (0: the
+/// opening's energy, the D_area of the cone areas alone). `u` and `w` must
+/// hold the areas of `p`; all three are updated.
 inline Relaxation_outcome relax_sphere_vertices(const std::vector<Face>& faces, const Vertex_faces& around,
                                                 const Weighted_area_energy& energy, double kappa, double mu,
                                                 const std::vector<std::size_t>& active,
-                                                std::vector<Vec3>& p, std::vector<double>& u, std::vector<double>& w)
+                                                std::vector<Vec3>& p, std::vector<double>& u, std::vector<double>& w,
+                                                double flat_weight = 1)
 {
   typedef Weighted_area_energy::Sums Sums;
   Relaxation_outcome out;
@@ -76,7 +78,7 @@ inline Relaxation_outcome relax_sphere_vertices(const std::vector<Face>& faces, 
       const int k = around.of[i].second;
       Vec3 flat, cone;
       corner_area_gradients(q, corner(f, k, 1), corner(f, k, 2), flat, cone);
-      model.add(energy.derivative(S, f, u[f]), energy.curvature(S, f, u[f]), dot(e1, flat), dot(e2, flat));
+      model.add(flat_weight * energy.derivative(S, f, u[f]), flat_weight * energy.curvature(S, f, u[f]), dot(e1, flat), dot(e2, flat));
       model.add(kappa * energy.derivative(Sw, f, w[f]), kappa * energy.curvature(Sw, f, w[f]), dot(e1, cone), dot(e2, cone));
     }
     double x0, x1, slope;
@@ -108,13 +110,13 @@ inline Relaxation_outcome relax_sphere_vertices(const std::vector<Face>& faces, 
         energy.change(S_new, f, u[f], a);
         energy.change(Sw_new, f, w[f], c);
       }
-      return energy.value(S_new) + kappa * energy.value(Sw_new);
+      return flat_weight * energy.value(S_new) + kappa * energy.value(Sw_new);
     };
     const auto certified = [&](const Vec3& x) {
       return moved_vertex_is_positive(around, begin, end, faces, p, x, &exact_orientation_sphere);
     };
     Vec3 moved;
-    if(relaxation_line_search(energy.value(S) + kappa * energy.value(Sw), (std::min)(1., mu * lambda_crit), slope,
+    if(relaxation_line_search(flat_weight * energy.value(S) + kappa * energy.value(Sw), (std::min)(1., mu * lambda_crit), slope,
                               [&](double l) { return normalized(Vec3{{ q[0] + l * d[0], q[1] + l * d[1], q[2] + l * d[2] }}); },
                               energy_at, certified, moved, out)) {
       for(std::size_t i = begin; i < end; ++i) {
