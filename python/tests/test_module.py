@@ -363,7 +363,9 @@ def test_callback_exception_propagates(ball):
 
 
 def test_flow_runs_without_the_gil():
-    V, F = read_off(mesh_path("mushroom.off"))
+    # One call long enough on any machine (about 0.3 s here): between calls
+    # the spinner would run even if a call held the GIL.
+    V, F = read_off(mesh_path("mannequin-devil.off"))
     count = [0]
     stop = threading.Event()
 
