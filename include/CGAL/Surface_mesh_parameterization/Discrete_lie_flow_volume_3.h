@@ -55,6 +55,7 @@ struct Discrete_lie_flow_volume_options
   double share_tolerance = 0.005;
   /// Settings of the spherical map of the border (the start).
   Discrete_lie_flow_options border;
+  /// Keep every iteration in the report's `history`.
   bool record_history = false;
   /// Called after every iteration (untangling and flow); false stops the run.
   std::function<bool(const internal::dlf::Volume_iteration&)> callback;
@@ -64,10 +65,11 @@ struct Discrete_lie_flow_volume_options
 /// One density level's share of the ball: the tets of one density value.
 struct Discrete_lie_flow_volume_share
 {
-  double density = 1;
-  std::size_t tets = 0;
+  double density = 1;        ///< the density value ρ of this level
+  std::size_t tets = 0;      ///< the number of tets with that value
   double target_share = 0;   ///< Σ ρ vol_M / Σ ρ vol_M over all tets
   double achieved_share = 0; ///< Σ vol_Ω / Σ vol_Ω
+  /// achieved / target − 1 (0 without a target).
   double relative_error() const { return target_share > 0 ? achieved_share / target_share - 1 : 0; }
 };
 
@@ -75,28 +77,40 @@ struct Discrete_lie_flow_volume_share
 /// What a run of `Discrete_lie_flow_volume_parameterizer_3` did.
 struct Discrete_lie_flow_volume_report
 {
-  Error_code status = OK;
+  Error_code status = OK; ///< OK, or the error that stopped the run
   std::string message;  ///< "Success", or what stopped the run (the offending element on error)
-  Discrete_lie_flow_stop_reason stop_reason = Discrete_lie_flow_stop_reason::NOT_RUN;
+  Discrete_lie_flow_stop_reason stop_reason = Discrete_lie_flow_stop_reason::NOT_RUN; ///< why the flow stopped
+  /// Whether the flow reached its tolerances.
   bool converged() const { return stop_reason == Discrete_lie_flow_stop_reason::CONVERGED; }
-  std::size_t vertices = 0, border_vertices = 0, tets = 0, border_faces = 0;
-  std::size_t iterations = 0;
+  std::size_t vertices = 0;        ///< vertices of the tet mesh
+  std::size_t border_vertices = 0; ///< of which on its border
+  std::size_t tets = 0;            ///< tets of the mesh
+  std::size_t border_faces = 0;    ///< border triangles
+  std::size_t iterations = 0;      ///< iterations of the flow
   double initial_d_vol = 0;  ///< D_vol of the certified start
   double final_d_vol = 0;    ///< D_vol = Σ w_t (r_t + 1/r_t), optimum 2
-  double log_volume_mean_abs = 0, log_volume_max_abs = 0; ///< of log r_t
-  double min_ratio = 0, max_ratio = 0; ///< of r_t = (vol_Ω/Σ vol_Ω)/w_t
+  double log_volume_mean_abs = 0; ///< mean of |log r_t|
+  double log_volume_max_abs = 0;  ///< largest |log r_t|
+  double min_ratio = 0;           ///< smallest r_t = (vol_Ω/Σ vol_Ω)/w_t
+  double max_ratio = 0;           ///< largest r_t
   double volume = 0;         ///< Σ vol_Ω, the volume of the image (the polytope inscribed in the unit ball)
-  std::size_t inverted_tets = 0, flat_tets = 0; ///< of the result, by CGAL's exact orientation
+  std::size_t inverted_tets = 0; ///< negative tets of the result, by CGAL's exact orientation
+  std::size_t flat_tets = 0;     ///< flat tets of the result, likewise
   std::size_t inverted_border_faces = 0; ///< border triangles with orientation(O, a, b, c) ≠ POSITIVE (O the centre)
   bool start_certified = false; ///< every tet of the start positive by the exact predicate
-  std::size_t start_negative_tets = 0, start_flat_tets = 0; ///< of Tutte's embedding, before untangling
-  std::size_t untangle_iterations = 0;
+  std::size_t start_negative_tets = 0; ///< negative tets of Tutte's embedding, before untangling
+  std::size_t start_flat_tets = 0;     ///< flat tets of Tutte's embedding, before untangling
+  std::size_t untangle_iterations = 0; ///< iterations of the start's untangling
   std::size_t rejected_by_exact_check = 0; ///< trial steps the doubles accepted and the exact predicate refused
-  std::size_t cg_iterations = 0;
+  std::size_t cg_iterations = 0; ///< conjugate-gradient steps of the flow, in all
   std::vector<Discrete_lie_flow_volume_share> shares; ///< per density value (up to 32 values)
   double share_error_max = 0; ///< largest |relative_error()| of `shares`
   Discrete_lie_flow_report border; ///< the spherical map of the border
-  double seconds_border = 0, seconds_interior = 0, seconds_untangle = 0, seconds_flow = 0, seconds_total = 0;
+  double seconds_border = 0;   ///< the spherical map of the border
+  double seconds_interior = 0; ///< Tutte's embedding of the interior
+  double seconds_untangle = 0; ///< the untangling
+  double seconds_flow = 0;     ///< the flow
+  double seconds_total = 0;    ///< the whole run
   std::vector<internal::dlf::Volume_iteration> history; ///< with `record_history`
   std::vector<double> volume_ratio; ///< r_t per tet of the result
 };
