@@ -410,6 +410,18 @@ bool parse_score_arguments(const std::vector<std::string>& args, Score_settings&
 
 std::vector<std::string> glue_region_balls(const std::vector<std::string>& args) { return glue_roi_ball(args); }
 
+po::variables_map parse_command_line(const std::string& command, const std::vector<std::string>& args,
+                                     const po::options_description& visible, const std::string& positional_name,
+                                     std::vector<po::option>* ordered)
+{
+  return parse(command, args, visible, positional_name, ordered);
+}
+
+std::vector<std::string> positional_arguments(const po::variables_map& vm, const std::string& name)
+{
+  return positionals(vm, name);
+}
+
 std::vector<Region_option> regions_in_order(const std::vector<boost::program_options::option>& ordered)
 {
   return regions_of(ordered);

@@ -10,6 +10,7 @@
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 
 #include <boost/program_options/option.hpp>
+#include <boost/program_options/options_description.hpp>
 #include <boost/program_options/variables_map.hpp>
 
 #include <array>
@@ -71,6 +72,18 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
 bool parse_score_arguments(const std::vector<std::string>& args, Score_settings& settings);
 
 void print_main_help(std::ostream& out);
+
+/// Parses the arguments of `dlf COMMAND` against `visible`, the remaining
+/// words going to the positional option `positional_name`; long options only
+/// by their full name. Boost's exceptions become one-line usage errors
+/// (`Cli_error`). `ordered`, if given, receives the options in order.
+boost::program_options::variables_map parse_command_line(const std::string& command, const std::vector<std::string>& args,
+                                                         const boost::program_options::options_description& visible,
+                                                         const std::string& positional_name,
+                                                         std::vector<boost::program_options::option>* ordered = nullptr);
+
+/// The words given to the positional option `name` (none: empty).
+std::vector<std::string> positional_arguments(const boost::program_options::variables_map& vm, const std::string& name);
 
 /// For the commands that take `--roi-ball X Y Z R` (whose values may look
 /// like options): the arguments with each ball glued into one value.

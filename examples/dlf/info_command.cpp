@@ -348,25 +348,12 @@ int info_command(const std::vector<std::string>& args)
     ("help,h", "show this help")
     ("report", po::value<std::string>(&report)->value_name("R.json"), "write the same as JSON")
     ("quiet,q", "print nothing (with --report)");
-  po::options_description all;
-  all.add(visible);
-  all.add_options()("mesh", po::value<std::vector<std::string> >());
-  po::positional_options_description positional;
-  positional.add("mesh", -1);
-  po::variables_map vm;
-  try {
-    const int style = po::command_line_style::default_style & ~po::command_line_style::allow_guessing;
-    po::store(po::command_line_parser(args).options(all).positional(positional).style(style).run(), vm);
-    po::notify(vm);
-  } catch(const po::error& e) {
-    throw Cli_error(std::string(e.what()) + " (see 'dlf info --help')");
-  }
+  const po::variables_map vm = parse_command_line("info", args, visible, "mesh");
   if(vm.count("help")) {
     std::cout << info_help << "\n" << visible;
     return EXIT_OK;
   }
-  const std::vector<std::string> meshes = vm.count("mesh") ? vm["mesh"].as<std::vector<std::string> >()
-                                                             : std::vector<std::string>();
+  const std::vector<std::string> meshes = positional_arguments(vm, "mesh");
   if(meshes.size() != 1) throw Cli_error("dlf info needs exactly one MESH (see 'dlf info --help')");
   const std::string& path = meshes[0];
   Output_files outputs;

@@ -7,6 +7,7 @@
 // builds configured with DLF_WITH_TETRAHEDRALIZE=OFF (the sanitizer build)
 // leave it out.
 
+#include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
 
@@ -88,25 +89,12 @@ int tetrahedralize_command(const std::vector<std::string>& args)
      "the tetrahedra's size bound as a fraction of the bounding box's diagonal (instead of --tets)")
     ("no-optimize", "skip the sliver perturbation and exudation (faster, worse tetrahedra)")
     ("quiet,q", "print nothing on success");
-  po::options_description all;
-  all.add(visible);
-  all.add_options()("input", po::value<std::vector<std::string> >());
-  po::positional_options_description positional;
-  positional.add("input", -1);
-  po::variables_map vm;
-  try {
-    const int style = po::command_line_style::default_style & ~po::command_line_style::allow_guessing;
-    po::store(po::command_line_parser(args).options(all).positional(positional).style(style).run(), vm);
-    po::notify(vm);
-  } catch(const po::error& e) {
-    throw Cli_error(std::string(e.what()) + " (see 'dlf tetrahedralize --help')");
-  }
+  const po::variables_map vm = parse_command_line("tetrahedralize", args, visible, "input");
   if(vm.count("help")) {
     std::cout << tetrahedralize_help << "\n" << visible;
     return EXIT_OK;
   }
-  const std::vector<std::string> inputs = vm.count("input") ? vm["input"].as<std::vector<std::string> >()
-                                                              : std::vector<std::string>();
+  const std::vector<std::string> inputs = positional_arguments(vm, "input");
   if(inputs.size() != 1) throw Cli_error("expected one input surface (see 'dlf tetrahedralize --help')");
   input = inputs[0];
   if(output.empty()) throw Cli_error("missing -o OUT.mesh");

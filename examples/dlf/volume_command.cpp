@@ -6,6 +6,7 @@
 // exact predicate; write the ball's points with the input tets (all outputs
 // or none), a JSON report and a picture of the border.
 
+#include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
 #include "output_files.h"
@@ -147,25 +148,12 @@ int volume_command(const std::vector<std::string>& args)
     ("history", "per-iteration history in the report")
     ("quiet,q", "print nothing on success")
     ("verbose,v", "one progress line per iteration");
-  po::options_description all;
-  all.add(visible);
-  all.add_options()("input", po::value<std::vector<std::string> >());
-  po::positional_options_description positional;
-  positional.add("input", -1);
-  po::variables_map vm;
-  try {
-    const int style = po::command_line_style::default_style & ~po::command_line_style::allow_guessing;
-    po::store(po::command_line_parser(args).options(all).positional(positional).style(style).run(), vm);
-    po::notify(vm);
-  } catch(const po::error& e) {
-    throw Cli_error(std::string(e.what()) + " (see 'dlf volume --help')");
-  }
+  const po::variables_map vm = parse_command_line("volume", args, visible, "input");
   if(vm.count("help")) {
     std::cout << volume_help << "\n" << visible;
     return EXIT_OK;
   }
-  const std::vector<std::string> inputs = vm.count("input") ? vm["input"].as<std::vector<std::string> >()
-                                                              : std::vector<std::string>();
+  const std::vector<std::string> inputs = positional_arguments(vm, "input");
   if(inputs.size() != 1) throw Cli_error("expected one input .mesh (see 'dlf volume --help')");
   const std::string input = inputs[0];
   const bool quiet = vm.count("quiet") != 0, verbose = vm.count("verbose") != 0;
