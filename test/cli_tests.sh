@@ -188,7 +188,10 @@ if [ -s nef.json ]; then
   check "score: 0 inverted faces, as the report" equals "$(json_get score.json metrics inverted_faces) $(json_get nef.json final inverted_faces)" "0 0"
   check "score: the Table 1 Wasserstein distance equals the report's (1e-9 relative)" \
     relatively_equal "$(json_get score.json metrics wasserstein_table1)" "$(json_get nef.json final wasserstein_table1)" 1e-9
-  check "score: Area_total is reported and small" number_is "$(json_get score.json metrics area_total)" "<" 0.05
+  # Σ w|r − 1| ≤ (Σ w (r − 1)²/r · Σ w r)^½ = (D_area − 2)^½ (Cauchy–Schwarz, Σ w r = 1).
+  check "score: Area_total is reported and within (D_area - 2)^1/2" number_is "$(json_get score.json metrics area_total)" "<=" \
+    "$(python3 -c "import math, sys; print(math.sqrt(float(sys.argv[1]) - 2))" "$(json_get score.json metrics d_area)")"
+  check "score: Area_total is positive" number_is "$(json_get score.json metrics area_total)" ">" 0
   check "score: the Beltrami block is reported" bash -c "python3 -c \"import json,sys; b=json.load(open('score.json'))['metrics']['beltrami']; sys.exit(not (0 <= b['mean'] <= b['max'] and 0 <= b['weighted_mean'] <= b['max']))\""
   # a flat OBJ (v = uv, z = 0, no vt) is read too
   awk '/^vt / { print "v", $2, $3, 0 }' nef.obj > flat.obj

@@ -205,9 +205,9 @@ TEST(DensityRegions, MeshWithBorderGeodesicBallSharesWithinTheTolerance)
 }
 
 // D_area lets a whole region drift on a finer mesh (nefertiti after one
-// Loop subdivision: ×0.5 ended 1.8% over its share at D_area 2.0005); the
-// share tolerance holds every region, and the report's share error is the
-// region's relative error, recomputed here.
+// Loop subdivision, at the default tolerance 2.01: ×0.25 ends 25% over its
+// share, ×2 10%); the share tolerance holds every region, and the report's
+// share error is the region's relative error, recomputed here.
 TEST(DensityRegions, ShareToleranceHoldsTheRegionsOfAFinerMesh)
 {
   Loaded m;
@@ -222,12 +222,12 @@ TEST(DensityRegions, ShareToleranceHoldsTheRegionsOfAFinerMesh)
   Density_map rho = m.sm.add_property_map<SM_face, double>("f:rho", 1.).first;
   UV_map uv = m.sm.add_property_map<SM_vertex, K::Point_2>("v:uv").first;
   double worst_without = 0;
-  for(double factor : { 0.25, 0.5, 2. }) {
+  for(double factor : { 0.25, 0.5, 2., 4. }) {
     SCOPED_TRACE("factor " + std::to_string(factor));
     SMP::set_region_density(m.sm, region_faces, factor, rho, 0.);
     for(double share_tolerance : { 0., 5e-3 }) {
       SMP::Discrete_lie_flow_options options;
-      options.tolerance = Density_tolerance;
+      options.tolerance = 1e-2;
       options.certified.share_tolerance = share_tolerance;
       Dlf dlf(Dlf::Initial_parameterizer(), options);
       dlf.set_face_density(rho);
@@ -245,9 +245,9 @@ TEST(DensityRegions, ShareToleranceHoldsTheRegionsOfAFinerMesh)
       EXPECT_LE(error, share_promise);
     }
   }
-  // Without the test on shares, some region misses the 1% goal: the mesh
+  // Without the test on shares, the regions miss the 1% goal: the mesh
   // exercises what the tolerance is for.
-  EXPECT_GT(worst_without, 0.01);
+  EXPECT_GT(worst_without, 0.05);
 }
 
 // The regions checked: none for a uniform density, whatever its scale, or

@@ -583,6 +583,21 @@ TEST_P(Certified_disk, Circle)
   const Flow_run r = run_dlf<Circle_dlf>(sm, Circle_init(), certified_options());
   expect_certified_run(r, Border_shape::CIRCLE);
   EXPECT_EQ(r.report.border, SMP::Discrete_lie_flow_border::CIRCLE) << "the circle was not detected";
+  // With the default start the flow computes Tutte's map itself, with its
+  // own solver: it must be the map the initial parameterizer gives (r.uv0),
+  // the border bit for bit (CGAL's arithmetic), the interior to rounding.
+  ASSERT_EQ(r.report.initial_uv.size(), r.uv0.size());
+  double worst = 0;
+  for(SM_vertex v : vertices(sm)) {
+    const V2 &a = r.report.initial_uv[v.idx()], &b = r.uv0[v.idx()];
+    if(is_border(v, sm)) {
+      EXPECT_EQ(a[0], b[0]) << "border vertex " << v.idx();
+      EXPECT_EQ(a[1], b[1]) << "border vertex " << v.idx();
+    } else {
+      worst = (std::max)(worst, (std::max)(std::fabs(a[0] - b[0]), std::fabs(a[1] - b[1])));
+    }
+  }
+  EXPECT_LT(worst, 1e-12) << "the flow's Tutte start differs from Symmetric_barycentric_mapping_parameterizer_3's";
 }
 
 // The square of CGAL's Square_border_arc_length_parameterizer_3 with its
@@ -630,6 +645,12 @@ TEST_P(Certified_disk, Square)
   const Flow_run r = run_dlf<Square_dlf>(sm, init, certified_options());
   expect_certified_run(r, Border_shape::SQUARE);
   EXPECT_EQ(r.report.border, SMP::Discrete_lie_flow_border::SQUARE) << "the square was not detected";
+  // Any other initial parameterizer's map is the report's start as it gave it.
+  ASSERT_EQ(r.report.initial_uv.size(), r.uv0.size());
+  for(std::size_t i = 0; i < r.uv0.size(); ++i) {
+    EXPECT_EQ(r.report.initial_uv[i][0], r.uv0[i][0]) << "vertex " << i;
+    EXPECT_EQ(r.report.initial_uv[i][1], r.uv0[i][1]) << "vertex " << i;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(DataSet, Certified_disk, ::testing::ValuesIn(disk_meshes), test_name);

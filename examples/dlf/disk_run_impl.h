@@ -17,7 +17,7 @@
 #include <Eigen/SparseLU>
 
 #include <chrono>
-#include <memory>
+#include <utility>
 
 namespace dlf_cli {
 
@@ -26,41 +26,6 @@ namespace dlf_cli {
 /// instantiation the library's default makes.
 typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType,
                                                   Eigen::COLAMDOrdering<int> > > Direct_solver;
-
-/// Forwards to an initial parameterizer and keeps a copy of the map it
-/// computed: the report's initial metrics need the initial map, and the flow
-/// overwrites it. Cheaper than a second run of the initial parameterizer
-/// (ARAP takes seconds on large meshes).
-template <class Init>
-class Initial_map_recorder
-{
-public:
-  explicit Initial_map_recorder(Init init = Init(),
-                                std::shared_ptr<std::vector<Vec2> > out = std::make_shared<std::vector<Vec2> >())
-    : m_init(init), m_out(out)
-  {}
-
-  template <typename Mesh, typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>
-  CGAL::Surface_mesh_parameterization::Error_code parameterize(Mesh& mesh,
-                                                               typename boost::graph_traits<Mesh>::halfedge_descriptor bhd,
-                                                               VertexUVmap uvmap, VertexIndexMap vimap,
-                                                               VertexParameterizedMap vpmap)
-  {
-    const CGAL::Surface_mesh_parameterization::Error_code code = m_init.parameterize(mesh, bhd, uvmap, vimap, vpmap);
-    m_out->clear();
-    if(code != CGAL::Surface_mesh_parameterization::OK) return code;
-    m_out->resize(num_vertices(mesh));
-    for(typename boost::graph_traits<Mesh>::vertex_descriptor v : vertices(mesh)) {
-      const Kernel::Point_2 p = get(uvmap, v);
-      (*m_out)[std::size_t(get(vimap, v))] = {{ p.x(), p.y() }};
-    }
-    return code;
-  }
-
-private:
-  Init m_init;
-  std::shared_ptr<std::vector<Vec2> > m_out;
-};
 
 /// Runs the flow with the initial parameterizer `init` on any face graph
 /// (`Surface_mesh`, `Seam_mesh`), calling the parameterizer's own
@@ -72,8 +37,7 @@ Disk_run run_disk_on(Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_de
                      const Init& init, const Disk_settings& settings)
 {
   namespace SMP = CGAL::Surface_mesh_parameterization;
-  typedef Initial_map_recorder<Init> Recorder;
-  typedef SMP::Discrete_lie_flow_parameterizer_3<Mesh, Recorder> Parameterizer;
+  typedef SMP::Discrete_lie_flow_parameterizer_3<Mesh, Init> Parameterizer;
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor Vertex;
 
   // Every vertex gets its entry now: on a Seam_mesh these maps are hash
@@ -87,13 +51,12 @@ Disk_run run_disk_on(Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_de
   }
 
   Disk_run run;
-  auto initial = std::make_shared<std::vector<Vec2> >();
-  Parameterizer parameterizer(Recorder(init, initial), settings.options);
+  Parameterizer parameterizer(init, settings.options);
   const auto t0 = std::chrono::steady_clock::now();
   run.status = parameterizer.parameterize(mesh, bhd, uvmap, vimap, vpmap);
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   run.report = parameterizer.report();
-  run.initial_uv = *initial;
+  run.initial_uv = std::move(run.report.initial_uv); // the flow overwrote the map; the report kept the start
   if(run.status == SMP::OK) {
     run.final_uv.resize(num_vertices(mesh));
     for(Vertex v : vertices(mesh)) {

@@ -39,6 +39,24 @@
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
+namespace internal {
+namespace dlf {
+
+/// Whether an initial parameterizer gives Tutte's map (uniform weights) with
+/// the border on the circle by arc length, which the flow then computes
+/// itself (the same map to rounding), whatever the parameterizer's solver.
+template <class Initial, class TriangleMesh>
+struct Is_tutte_on_arc_length_circle : std::false_type {};
+template <class TriangleMesh, class Solver>
+struct Is_tutte_on_arc_length_circle<Symmetric_barycentric_mapping_parameterizer_3<TriangleMesh, Default, Solver>,
+                                     TriangleMesh> : std::true_type {};
+template <class TriangleMesh, class Solver>
+struct Is_tutte_on_arc_length_circle<
+  Symmetric_barycentric_mapping_parameterizer_3<TriangleMesh, Circular_border_arc_length_parameterizer_3<TriangleMesh>, Solver>,
+  TriangleMesh> : std::true_type {};
+
+} // namespace dlf
+} // namespace internal
 
 /// \ingroup PkgDiscreteLieFlowParameterizers
 ///
@@ -78,6 +96,10 @@ namespace Surface_mesh_parameterization {
 /// \tparam InitialParameterizer_ a model of `Parameterizer_3` giving a flip-free
 ///   initial map; its border decides the domain (circle, square, or free).
 ///   Default: Tutte on the circle by arc length (`Symmetric_barycentric_mapping_parameterizer_3`).
+///   With that parameterizer (on the circle by arc length, any solver), a
+///   disk and the certified mode, the flow computes the same map itself,
+///   with its own solver: one factorization of Tutte's system then gives the
+///   start and the start's border spacing by area (the same map to rounding).
 /// \tparam SolverTraits_ `CGAL::Eigen_solver_traits<S>` with `S` an Eigen
 ///   sparse SPD solver offering `analyzePattern()`/`factorize()`. Default:
 ///   CHOLMOD's supernodal LLT when available, else `Eigen::SimplicialLDLT`.
@@ -202,12 +224,27 @@ public:
     // The solver's threads for the initial map too (Tutte's factorization
     // is as large as a flow step's); flow_disk() keeps them.
     const D::Scoped_blas_threads threads(m_options.solver_threads, vertex_of.size());
-    const Clock::time_point t0 = Clock::now();
-    code = m_initial.parameterize(mesh, bhd, uvmap, vimap, vpmap);
-    R.seconds_initial = std::chrono::duration<double>(Clock::now() - t0).count();
-    if(code != OK) return fail(code, std::string("initial map: ") + discrete_lie_flow_error_message(code));
-
+    typedef typename std::remove_reference<decltype(m_solver_traits.solver())>::type Eigen_solver;
+    std::unique_ptr<D::Tutte_interior_system<Eigen_solver> > tutte;
     std::vector<D::Vec2> uv(vertex_of.size());
+    const Clock::time_point t0 = Clock::now();
+    // The library's own Tutte start in certified mode, whose start spacing
+    // reuses the factorization; the paper's modes keep the caller's.
+    if(D::Is_tutte_on_arc_length_circle<Initial_parameterizer, Triangle_mesh>::value && P.fill_faces == 0 &&
+       m_options.mode == Discrete_lie_flow_mode::CERTIFIED) {
+      code = tutte_start(P, uv, tutte);
+      R.seconds_initial = std::chrono::duration<double>(Clock::now() - t0).count();
+      if(code != OK) return fail(code, std::string("initial map: ") + discrete_lie_flow_error_message(code));
+      for(std::size_t i = 0; i < vertex_of.size(); ++i) {
+        put(uvmap, vertex_of[i], Point_2(uv[i][0], uv[i][1]));
+        put(vpmap, vertex_of[i], true);
+      }
+    } else {
+      code = m_initial.parameterize(mesh, bhd, uvmap, vimap, vpmap);
+      R.seconds_initial = std::chrono::duration<double>(Clock::now() - t0).count();
+      if(code != OK) return fail(code, std::string("initial map: ") + discrete_lie_flow_error_message(code));
+    }
+
     // With holes, only the outer loop is taken from the initial map.
     std::vector<char> taken(vertex_of.size(), P.fill_faces == 0);
     for(int b : P.boundary) taken[std::size_t(b)] = 1;
@@ -224,11 +261,12 @@ public:
       // loop is convex; flow_disk() certifies it by the exact predicate.
       const Clock::time_point t1 = Clock::now();
       uv.resize(P.xyz.size(), D::Vec2{{ 0, 0 }});
-      if(!D::filled_disk_tutte<typename std::remove_reference<decltype(m_solver_traits.solver())>::type>(P, uv))
+      if(!D::filled_disk_tutte<Eigen_solver>(P, uv))
         return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "initial map: the Tutte solve of the disk with filled holes failed");
       R.seconds_initial += std::chrono::duration<double>(Clock::now() - t1).count();
     }
-    code = D::flow_disk(P, uv, m_options, m_solver_traits.solver(), R);
+    R.initial_uv.assign(uv.begin(), uv.begin() + std::ptrdiff_t(vertex_of.size()));
+    code = D::flow_disk(P, uv, m_options, m_solver_traits.solver(), R, tutte.get());
     if(code != OK) {
       if(int(code) == int(ERROR_INITIAL_MAP_FOLDED) && P.fill_faces > 0)
         R.message += " (the start on the disk with filled holes: Tutte's embedding inside the initial map's outer loop, "
@@ -246,6 +284,19 @@ public:
   }
 
 private:
+  // The default initial map, Tutte's with the border on the circle by arc
+  // length, from the problem: its factorization stays in `tutte`.
+  template <class EigenSolver>
+  Error_code tutte_start(const internal::dlf::Disk_problem& P, std::vector<internal::dlf::Vec2>& uv,
+                         std::unique_ptr<internal::dlf::Tutte_interior_system<EigenSolver> >& tutte)
+  {
+    namespace D = internal::dlf;
+    if(!D::circle_border_by_arc_length(P, uv)) return ERROR_BORDER_TOO_SHORT;
+    tutte.reset(new D::Tutte_interior_system<EigenSolver>(P, uv.size(), m_solver_traits.solver()));
+    if(tutte->unknowns() > 0 && !tutte->factorized()) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+    return tutte->solve(uv) ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  }
+
   // A face named by the indices of its vertices, the only names every mesh type shares.
   template <typename VertexIndexMap>
   static std::string face_name(const Triangle_mesh& mesh, VertexIndexMap vimap, face_descriptor f)

@@ -127,6 +127,10 @@ struct Discrete_lie_flow_report
   ///@}
   /// Per face (the order of the input's faces): the density ρ the flow used.
   std::vector<double> face_density;
+  /// The disk: the map the flow started from, per vertex index (with holes,
+  /// the library's start inside the initial parameterizer's outer loop);
+  /// empty when the initial map failed.
+  std::vector<std::array<double, 2> > initial_uv;
   /// The disk: the border the flow used (circle, square or free).
   Discrete_lie_flow_border border = Discrete_lie_flow_border::AUTOMATIC;
   /// The sphere, paper mode: edges of `domain_faces` left non-Delaunay (0

@@ -17,6 +17,9 @@
 // times, each time re-solving Tutte's map with the factorisation of the
 // first (the matrix does not change). Tutte's map of a convex border is an
 // embedding; each candidate is still checked with the exact predicate.
+//
+// The same factor gives the default start (Tutte's map with the border on
+// the circle by arc length) when the library computes it itself.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_BORDER_SPACING_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_BORDER_SPACING_H
@@ -27,6 +30,8 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certification.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_problem.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sparse_solver.h>
+
+#include <CGAL/number_type_config.h>
 
 #include <Eigen/Sparse>
 
@@ -131,27 +136,104 @@ inline std::vector<double> border_target_shares(const Disk_problem& P, const std
   return share;
 }
 
+/// Tutte's system of the interior vertices of a problem (uniform weights),
+/// factorised once by the flow's solver: the start's map and every respaced
+/// border below are solved with that one factor, and its symbolic analysis
+/// (the pattern of the flow's interior stiffness) serves the flow
+/// (Pattern_reusing_solver::adopt_analysis()).
+template <class EigenSolver>
+class Tutte_interior_system
+{
+public:
+  /// Assembles and factorises the system of `P`'s `n` vertices with `solver`.
+  Tutte_interior_system(const Disk_problem& P, std::size_t n, EigenSolver& solver) : m_solver(solver)
+  {
+    m_unknowns = tutte_interior_matrix(P, n, m_interior, m_neighbours, m_A);
+    m_A.makeCompressed();
+    m_factorized = m_unknowns > 0 && m_solver.factorize(m_A);
+  }
+
+  /// The number of interior vertices.
+  int unknowns() const { return m_unknowns; }
+
+  /// Whether the system has unknowns and its factorization succeeded.
+  bool factorized() const { return m_factorized; }
+
+  /// Writes into `uv` Tutte's map of the interior inside the border
+  /// positions that `uv` holds; false when a solve fails or gives a
+  /// non-finite value (then `uv`'s interior is unchanged).
+  bool solve(std::vector<Vec2>& uv)
+  {
+    if(m_unknowns == 0) return true;
+    if(!m_factorized) return false;
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(m_unknowns, 2), x;
+    for(std::size_t v = 0; v < m_interior.size(); ++v) {
+      if(m_interior[v] < 0) continue;
+      for(int w : m_neighbours[v])
+        if(m_interior[std::size_t(w)] < 0) {
+          rhs(m_interior[v], 0) += uv[std::size_t(w)][0];
+          rhs(m_interior[v], 1) += uv[std::size_t(w)][1];
+        }
+    }
+    if(!m_solver.solve(rhs, x)) return false;
+    for(std::size_t v = 0; v < m_interior.size(); ++v)
+      if(m_interior[v] >= 0) uv[v] = {{ x(m_interior[v], 0), x(m_interior[v], 1) }};
+    return true;
+  }
+
+  /// The solver wrapper that holds the factor and the analysis.
+  Pattern_reusing_solver<EigenSolver>& solver() { return m_solver; }
+
+private:
+  Pattern_reusing_solver<EigenSolver> m_solver;
+  std::vector<int> m_interior;
+  std::vector<std::vector<int> > m_neighbours;
+  Sparse_matrix m_A;
+  int m_unknowns = 0;
+  bool m_factorized = false;
+};
+
+/// The border loop of `P` on the circle of centre (½, ½) and radius ½,
+/// spaced by the 3D length of its edges, written into `uv`: the positions
+/// CGAL's `Circular_border_arc_length_parameterizer_3` gives when walking
+/// the border halfedges from the one whose target is `P.boundary[0]` (the
+/// same arithmetic in the same order). False when the border has length 0.
+inline bool circle_border_by_arc_length(const Disk_problem& P, std::vector<Vec2>& uv)
+{
+  const std::size_t nb = P.boundary.size();
+  // Halfedge k of the loop runs from P.boundary[k − 1] to P.boundary[k].
+  auto length = [&P, nb](std::size_t k) {
+    const Vec3& s = P.xyz[std::size_t(P.boundary[(k + nb - 1) % nb])];
+    const Vec3& t = P.xyz[std::size_t(P.boundary[k])];
+    const double x = t[0] - s[0], y = t[1] - s[1], z = t[2] - s[2];
+    return std::sqrt(x * x + y * y + z * z);
+  };
+  double total = 0;
+  for(std::size_t k = 0; k < nb; ++k) total += length(k);
+  if(!(total > 0)) return false;
+  const double scale = 2 * CGAL_PI / total;
+  double s = 0;
+  for(std::size_t k = 0; k < nb; ++k) {
+    const double angle = s * scale;
+    uv[std::size_t(P.boundary[(k + nb - 1) % nb])] = {{ 0.5 + 0.5 * std::cos(-angle), 0.5 + 0.5 * std::sin(-angle) }};
+    s += length(k);
+  }
+  return true;
+}
+
 /// Tutte's map of `P` with its border on the circle of `curve`, spaced by
 /// area (above). Replaces `uv` when one of the candidates is an embedding
 /// (exact predicate) whose barrier energy E is below `gain` times `uv`'s;
 /// returns whether it did. `uv` must be positively oriented with the
 /// boundary loop counter-clockwise on `curve`, which is then rebuilt for the
-/// new positions. `solver` factorises Tutte's matrix of the interior, whose
-/// pattern is the flow's interior stiffness's: its analysis can serve the
-/// flow (Pattern_reusing_solver::adopt_analysis()).
+/// new positions. `tutte` is the problem's factorised Tutte system.
 template <class EigenSolver>
 bool respace_border_by_area(const Disk_problem& P, std::vector<Vec2>& uv, Boundary_curve& curve,
-                            double gain, Pattern_reusing_solver<EigenSolver>& solver, std::size_t rounds = 8)
+                            double gain, Tutte_interior_system<EigenSolver>& tutte, std::size_t rounds = 8)
 {
-  const std::size_t n = uv.size(), nb = P.boundary.size();
+  const std::size_t nb = P.boundary.size();
   if(curve.kind() != Discrete_lie_flow_border::CIRCLE || nb < 3) return false;
-  std::vector<int> interior;
-  std::vector<std::vector<int> > neighbours;
-  Sparse_matrix A;
-  const int ni = tutte_interior_matrix(P, n, interior, neighbours, A);
-  if(ni == 0) return false;
-  A.makeCompressed();
-  if(!solver.factorize(A)) return false;
+  if(tutte.unknowns() == 0 || !tutte.factorized()) return false;
 
   // What each border vertex owns: a third of each face per corner.
   const std::vector<int> owner = nearest_border_vertex(P);
@@ -165,7 +247,6 @@ bool respace_border_by_area(const Disk_problem& P, std::vector<Vec2>& uv, Bounda
   const double L = curve.length(), s0 = curve.parameter(0);
   // Arc owned by each border vertex, first in proportion to its target share.
   std::vector<double> weight = target_share;
-  Eigen::MatrixXd rhs(ni, 2), x;
   for(std::size_t round = 0; round < rounds; ++round) {
     // Border vertex k at the middle of its arc: s_k = s0 + Σ_{j<k} weight_j + (weight_k − weight_0) / 2.
     double sum = 0;
@@ -175,18 +256,7 @@ bool respace_border_by_area(const Disk_problem& P, std::vector<Vec2>& uv, Bounda
       if(k > 0) s += 0.5 * (weight[k - 1] + weight[k]) / sum * L;
       candidate[std::size_t(P.boundary[k])] = curve.point(s0 + s);
     }
-    rhs.setZero();
-    for(std::size_t v = 0; v < n; ++v) {
-      if(interior[v] < 0) continue;
-      for(int w : neighbours[v])
-        if(interior[std::size_t(w)] < 0) {
-          rhs(interior[v], 0) += candidate[std::size_t(w)][0];
-          rhs(interior[v], 1) += candidate[std::size_t(w)][1];
-        }
-    }
-    if(!solver.solve(rhs, x)) break;
-    for(std::size_t v = 0; v < n; ++v)
-      if(interior[v] >= 0) candidate[v] = {{ x(interior[v], 0), x(interior[v], 1) }};
+    if(!tutte.solve(candidate)) break;
     signed_areas_2(candidate, P.faces, u);
     const double E = energy.value(u);
     if(E < best_E && count_orientations_2(candidate, P.faces, true).all_positive()) {

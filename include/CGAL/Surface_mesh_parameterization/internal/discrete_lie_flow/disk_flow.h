@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <chrono>
 #include <iomanip>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -160,10 +161,13 @@ inline Error_code orient_to_initial_map(Disk_problem& P, const std::vector<Vec2>
 
 /// The planar flow on index data: `uv` is an initial map of `P` with all
 /// faces positive or all negative (modified in place on success; the map
-/// keeps the initial orientation). Fills `R`.
+/// keeps the initial orientation). Fills `R`. `start`, when the library
+/// computed the start itself, is the factorised Tutte system that gave it
+/// (on `solver`): the border spacing by area then solves with its factor.
 template <class EigenSolver>
 Error_code flow_disk(Disk_problem& P, std::vector<Vec2>& uv, const Discrete_lie_flow_options& opt,
-                     EigenSolver& solver, Discrete_lie_flow_report& R)
+                     EigenSolver& solver, Discrete_lie_flow_report& R,
+                     Tutte_interior_system<EigenSolver>* start = nullptr)
 {
   typedef std::chrono::steady_clock Clock;
   const Scoped_blas_threads threads(opt.solver_threads, uv.size());
@@ -203,13 +207,21 @@ Error_code flow_disk(Disk_problem& P, std::vector<Vec2>& uv, const Discrete_lie_
     std::vector<double> u0;
     signed_areas_2(uv, P.faces, u0);
     const double E0 = Area_barrier_energy(P.target).value(u0);
-    // Tutte's system there is factorised by the flow's solver: its analysis
-    // serves the flow's interior stiffness (the same pattern).
+    // Tutte's system there is factorised by the flow's solver (once, by the
+    // start when the library computed it): its analysis serves the flow's
+    // interior stiffness (the same pattern).
     Planar_flow_settings settings;
-    Pattern_reusing_solver<EigenSolver> tutte(solver);
-    if(opt.fixed_step == 0 && curve.kind() == Discrete_lie_flow_border::CIRCLE)
-      settings.coupled_metric = respace_border_by_area<EigenSolver>(P, uv, curve, 0.5, tutte);
-    Planar_certified_flow<EigenSolver> flow(P, uv, curve, opt, solver, settings, tutte.analyses() > 0 ? &tutte : nullptr);
+    std::unique_ptr<Tutte_interior_system<EigenSolver> > own;
+    Tutte_interior_system<EigenSolver>* tutte = start;
+    if(opt.fixed_step == 0 && curve.kind() == Discrete_lie_flow_border::CIRCLE) {
+      if(tutte == nullptr) {
+        own.reset(new Tutte_interior_system<EigenSolver>(P, uv.size(), solver));
+        tutte = own.get();
+      }
+      settings.coupled_metric = respace_border_by_area<EigenSolver>(P, uv, curve, 0.5, *tutte);
+    }
+    Planar_certified_flow<EigenSolver> flow(P, uv, curve, opt, solver, settings,
+                                            tutte != nullptr && tutte->solver().analyses() > 0 ? &tutte->solver() : nullptr);
     out = run_flow(flow, opt);
     out.initial_d_area = E0; // the caller's map
   }

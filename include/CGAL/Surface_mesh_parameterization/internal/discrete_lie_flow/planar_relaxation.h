@@ -97,6 +97,7 @@ inline Relaxation_outcome relax_planar_vertices(const std::vector<Face>& faces, 
       uv[v] = moved;
     }
   }
+  out.energy = 1 + U * K;
   return out;
 }
 

@@ -70,6 +70,7 @@ struct Vertex_model
 struct Relaxation_outcome
 {
   std::size_t moved = 0, refused_by_exact_check = 0;
+  double energy = 0; ///< the plane: E after the sweep, as the sweep kept it up to date
 };
 
 /// The line search of one vertex's relaxation move, shared by the plane and
