@@ -149,9 +149,13 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
   bool polishing = false;
   std::size_t polished = 0;
   std::vector<Vec3> certified_x;
-  while(out.iterations < max_iterations) {
+  // A round that accepts no step leaves x and, but for ε, everything as it
+  // was: three in a row end the attempt (else the loop would not end).
+  int idle_rounds = 0;
+  while(out.iterations < max_iterations && idle_rounds < 3) {
     if(polishing) break;
     ++out.rounds;
+    const std::size_t round_start = out.iterations;
     E = evaluate(x, eps, &g);
     project(x, g);
     const double E_round = E;
@@ -248,6 +252,7 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
       }
       if(drop < 1e-6) break;
     }
+    idle_rounds = out.iterations == round_start ? idle_rounds + 1 : 0;
     // The next ε.
     evaluate(x, eps, nullptr);
     dmin = *std::min_element(dets.begin(), dets.end());
