@@ -130,9 +130,10 @@ int volume_command(const std::vector<std::string>& args)
     ("max-iterations", po::value<std::size_t>(&options.max_iterations), "iteration cap (default 300)")
     ("mu", po::value<double>(&options.mu), "fraction of the critical step, in (0, 1) (default 0.8)")
     ("cg-iterations", po::value<std::size_t>(&options.cg_max_iterations),
-     "conjugate-gradient cap of each Newton solve (default 60)")
-    ("gauss-newton", "the flow's direction from the Gauss-Newton model (the barrier's curvature along the "
-     "volume gradients) instead of Newton's (D_vol's full Hessian)")
+     "conjugate-gradient cap of each Gauss-Newton solve (default 60)")
+    ("cholesky-every", po::value<std::size_t>(&options.cholesky_every)->value_name("K"),
+     "precondition the conjugate gradients by a sparse Cholesky factorisation of the Gauss-Newton matrix, "
+     "refreshed every K iterations (default 0: the 3x3 blocks of every vertex)")
     ("untangle-iterations", po::value<std::size_t>(&options.untangle_max_iterations)->value_name("N"),
      "iteration cap of the start's untangling, its 4 stages together (default 12000; at most 10000 per stage)")
     ("border-start", po::value<std::string>(&border_start)->value_name("tutte|conformal"),
@@ -175,7 +176,6 @@ int volume_command(const std::vector<std::string>& args)
   if(has_roi && !density_file.empty()) throw Cli_error("--density and --roi-ball exclude each other");
   options.record_history = vm.count("history") != 0;
   options.star_shaped_border = vm.count("star-shaped") != 0;
-  options.newton = vm.count("gauss-newton") == 0;
   if(border_start == "conformal") options.border.sphere.start = SMP::Discrete_lie_flow_sphere_start::CONFORMAL;
   else if(border_start != "tutte") throw Cli_error("--border-start takes tutte or conformal");
   Output_files files;

@@ -22,7 +22,6 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <cstddef>
 #include <functional>
 #include <limits>
@@ -82,15 +81,10 @@ struct Volume_flow_settings
   /// Keep every border triangle positive seen from the centre (a
   /// star-shaped border: with positive tets, a certificate of bijectivity).
   bool star_shaped_border = true;
-  /// The direction: Newton (true: D_vol's full Hessian, solved by
-  /// conjugate gradients truncated at negative curvature) or Gauss–Newton
-  /// (false: only the curvature of the barrier along the tets' volume
-  /// gradients).
-  bool newton = true;
   /// The conjugate gradients' preconditioner: a sparse Cholesky
   /// factorisation of the Gauss–Newton matrix, refreshed every this many
   /// iterations (0: block Jacobi, the 3 × 3 blocks of every vertex).
-  std::size_t cholesky_every = 1;
+  std::size_t cholesky_every = 0;
   std::function<bool(const Volume_iteration&)> callback; ///< false: stop (INTERRUPTED)
   /// Measure control: the level (0, 1, ...) of every tet (empty: none);
   /// converged also needs every level's share of the volume within
@@ -348,15 +342,11 @@ inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vect
                                            const std::vector<char>& on_border,
                                            const std::vector<std::array<int, 3> >& border_faces,
                                            const std::vector<double>& target,
-                                           const Volume_flow_settings& S_in,
+                                           const Volume_flow_settings& S,
                                            std::vector<Volume_iteration>* history = nullptr)
 {
   typedef std::chrono::steady_clock Clock;
   const Clock::time_point start = Clock::now();
-  const int EXPM = std::getenv("DLF_EXPM") ? std::atoi(std::getenv("DLF_EXPM")) : 0;
-  Volume_flow_settings S = S_in;
-  if(std::getenv("DLF_CHOL")) S.cholesky_every = std::size_t(std::atoi(std::getenv("DLF_CHOL")));
-  if(std::getenv("DLF_NEWTON")) S.newton = std::atoi(std::getenv("DLF_NEWTON")) != 0;
   const double eps = 0;
   const std::size_t V = x.size(), T = tets.size();
   Volume_flow_outcome out;
@@ -364,7 +354,7 @@ inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vect
   Volume_dofs dofs(on_border, false);
   std::vector<double> u, dE, w, u_trial;
   std::vector<std::array<Vec3, 4> > grad(T); // ∂(6u)/∂x_k per tet
-  std::vector<Vec3> gv(V), d, x_trial(V), hv, gU(V), gK(V);
+  std::vector<Vec3> gv(V), d, x_trial(V), hv;
   std::vector<std::array<double, 6> > M(V);
   std::vector<std::array<double, 9> > Minv;
   Eigen::VectorXd g, s, r, z, p, q;
@@ -388,12 +378,7 @@ inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vect
     energy.derivatives(u, eps, dE, w);
     // Gradient and the Gauss–Newton blocks.
     std::fill(gv.begin(), gv.end(), Vec3{{ 0, 0, 0 }});
-    std::fill(gU.begin(), gU.end(), Vec3{{ 0, 0, 0 }});
-    std::fill(gK.begin(), gK.end(), Vec3{{ 0, 0, 0 }});
     std::fill(M.begin(), M.end(), std::array<double, 6>{{ 0, 0, 0, 0, 0, 0 }});
-    double Usum = 0;
-    for(double a : u) Usum += a;
-    const double Ksum = (E - 1) / Usum; // E = 1 + U K
     for(std::size_t t = 0; t < T; ++t) {
       const Tet& k = tets[t];
       const Vec3& a = x[std::size_t(k[0])];
@@ -408,13 +393,6 @@ inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vect
         Vec3& acc = gv[std::size_t(k[std::size_t(j)])];
         std::array<double, 6>& m = M[std::size_t(k[std::size_t(j)])];
         for(int c = 0; c < 3; ++c) acc[std::size_t(c)] += dE[t] * h[std::size_t(c)];
-        if(S.newton) {
-          // ∇U and ∇K = −Σ c_t/u_t² ∇u_t (c_t/u_t² = (K − ∂E/∂u_t)/U): the coupling through U.
-          const double kt = -(Ksum - dE[t]) / Usum;
-          Vec3& aU = gU[std::size_t(k[std::size_t(j)])];
-          Vec3& aK = gK[std::size_t(k[std::size_t(j)])];
-          for(int c = 0; c < 3; ++c) { aU[std::size_t(c)] += h[std::size_t(c)]; aK[std::size_t(c)] += kt * h[std::size_t(c)]; }
-        }
         m[0] += w[t] * h[0] * h[0]; m[1] += w[t] * h[1] * h[1]; m[2] += w[t] * h[2] * h[2];
         m[3] += w[t] * h[0] * h[1]; m[4] += w[t] * h[0] * h[2]; m[5] += w[t] * h[1] * h[2];
       }
@@ -434,42 +412,6 @@ inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vect
           Vec3& o = hv[std::size_t(k[std::size_t(j)])];
           const Vec3& h = G[std::size_t(j)];
           o[0] += y_t * h[0]; o[1] += y_t * h[1]; o[2] += y_t * h[2];
-        }
-        if(S.newton && (EXPM & 1)) {
-          // ∂E/∂u_t times the Hessian of u_t = det[e1, e2, e3] applied to
-          // the edges' displacements δe: ∂(δu)/∂e1 = δe2 × e3 + e2 × δe3, cyclically.
-          const Vec3& a0 = x[std::size_t(k[0])];
-          const Vec3& d0 = d[std::size_t(k[0])];
-          Vec3 e[3], de[3], h[3];
-          for(int j = 0; j < 3; ++j) {
-            e[j] = sub(x[std::size_t(k[std::size_t(j + 1)])], a0);
-            de[j] = sub(d[std::size_t(k[std::size_t(j + 1)])], d0);
-          }
-          for(int j = 0; j < 3; ++j) {
-            const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-            const Vec3 c1 = cross(de[j1], e[j2]), c2 = cross(e[j1], de[j2]);
-            h[j] = {{ dE[t] * (c1[0] + c2[0]), dE[t] * (c1[1] + c2[1]), dE[t] * (c1[2] + c2[2]) }};
-          }
-          Vec3& o0 = hv[std::size_t(k[0])];
-          for(int j = 0; j < 3; ++j) {
-            Vec3& o = hv[std::size_t(k[std::size_t(j + 1)])];
-            for(int c = 0; c < 3; ++c) { o[std::size_t(c)] += h[j][std::size_t(c)]; o0[std::size_t(c)] -= h[j][std::size_t(c)]; }
-          }
-        }
-      }
-      if(S.newton) {
-        // The coupling ∇U ∇Kᵀ + ∇K ∇Uᵀ, and the sphere's curvature: a border
-        // point moved by s in its tangent plane and re-normalised moves by
-        // s − |s|²x/2 to second order, adding −(∇E·x) on its tangent block.
-        double aU = 0, aK = 0;
-        for(std::size_t v = 0; v < V; ++v) { aU += dot(gU[v], d[v]); aK += dot(gK[v], d[v]); }
-        for(std::size_t v = 0; v < V; ++v) {
-          Vec3& o = hv[v];
-          double sv = on_border[v] && (EXPM & 4) ? -dot(gv[v], x[v]) : 0.;
-          if(EXPM & 8) sv = (std::max)(sv, 0.);
-          const double cp = (EXPM & 2) ? 1. : 0.;
-          for(int c = 0; c < 3; ++c)
-            o[std::size_t(c)] += cp * (aU * gK[v][std::size_t(c)] + aK * gU[v][std::size_t(c)]) + sv * d[v][std::size_t(c)];
         }
       }
       dofs.restrict(hv, y);

@@ -17,6 +17,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_UNTANGLE_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_UNTANGLE_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_flow.h>
 
 #include <Eigen/Dense>
@@ -78,6 +79,55 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
       weight[t] = share;
     }
   }
+  // The L-BFGS's initial inverse Hessian: the stiffness of the shape term
+  // at the reference, Σ_t weight_t (∇β_t)(∇β_t)ᵀ (∇β the gradients of the
+  // tet's barycentric coordinates in the reference scaled to its target,
+  // i.e. the columns of D A with D the edge map), one scalar matrix for the
+  // three coordinates, the fixed vertices eliminated; factorised once. On
+  // Mesh_3's graded meshes it makes the directions independent of the
+  // element sizes, which plain L-BFGS is not.
+  std::vector<int> dof(V, -1);
+  int ndof = 0;
+  for(std::size_t v = 0; v < V; ++v) if(on_border[v] != 2) dof[v] = ndof++;
+  Default_spd_solver stiffness;
+  bool preconditioned = false;
+  if(ndof > 0) {
+    std::vector<Eigen::Triplet<double> > entries;
+    std::vector<double> diagonal(std::size_t(ndof), 0.);
+    for(std::size_t t = 0; t < T; ++t) {
+      const Tet& k = tets[t];
+      Eigen::Matrix<double, 4, 3> B; // rows: ∇β_0 … ∇β_3
+      B.block<3, 3>(1, 0) = A[t];
+      B.row(0) = -(A[t].row(0) + A[t].row(1) + A[t].row(2));
+      const Eigen::Matrix4d K = weight[t] * B * B.transpose();
+      for(int a = 0; a < 4; ++a) {
+        const int i = dof[std::size_t(k[std::size_t(a)])];
+        if(i < 0) continue;
+        for(int b = 0; b < 4; ++b) {
+          const int j = dof[std::size_t(k[std::size_t(b)])];
+          if(j >= 0 && j <= i) entries.emplace_back(i, j, K(a, b));
+        }
+        diagonal[std::size_t(i)] += K(a, a);
+      }
+    }
+    for(int i = 0; i < ndof; ++i) entries.emplace_back(i, i, 1e-8 * diagonal[std::size_t(i)] + 1e-300);
+    Sparse_matrix L(ndof, ndof);
+    L.setFromTriplets(entries.begin(), entries.end());
+    stiffness.compute(L);
+    preconditioned = stiffness.info() == Eigen::Success;
+  }
+  // dir ← P L⁻¹ P dir (P: the tangent planes of the border vertices).
+  Eigen::MatrixXd rhs;
+  auto apply_stiffness_inverse = [&](const std::vector<Vec3>& y, std::vector<Vec3>& dir) {
+    rhs.resize(ndof, 3);
+    for(std::size_t v = 0; v < V; ++v)
+      if(dof[v] >= 0) for(int c = 0; c < 3; ++c) rhs(dof[v], c) = dir[v][std::size_t(c)];
+    const Eigen::MatrixXd sol = stiffness.solve(rhs);
+    for(std::size_t v = 0; v < V; ++v)
+      if(dof[v] >= 0) for(int c = 0; c < 3; ++c) dir[v][std::size_t(c)] = sol(dof[v], c);
+      else dir[v] = {{ 0, 0, 0 }};
+    (void)y;
+  };
   // Energy and gradient (per vertex, ambient) at fixed ε.
   std::vector<double> dets(T);
   auto evaluate = [&](const std::vector<Vec3>& y, double eps, std::vector<Vec3>* grad) {
@@ -160,6 +210,7 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
     project(x, g);
     const double E_round = E;
     std::deque<std::pair<std::vector<Vec3>, std::vector<Vec3> > > memory; // (s_k, y_k)
+    std::deque<double> memory_hy; // y_kᵀ H₀ y_k
     for(int it = 0; it < 200 && out.iterations < max_iterations; ++it) {
       // Two-loop recursion.
       dir = g;
@@ -170,7 +221,15 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
         for(std::size_t i = 0; i < V; ++i)
           for(int c = 0; c < 3; ++c) dir[i][std::size_t(c)] -= alpha[m] * memory[m].second[i][std::size_t(c)];
       }
-      if(!memory.empty()) {
+      if(preconditioned) {
+        project(x, dir);
+        apply_stiffness_inverse(x, dir);
+        project(x, dir);
+        if(!memory.empty()) {
+          const double gamma = inner(memory.back().first, memory.back().second) / memory_hy.back();
+          for(Vec3& v : dir) for(double& c : v) c *= gamma;
+        }
+      } else if(!memory.empty()) {
         const double gamma = inner(memory.back().first, memory.back().second) / inner(memory.back().second, memory.back().second);
         for(Vec3& v : dir) for(double& c : v) c *= gamma;
       }
@@ -185,6 +244,7 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
       double slope = inner(g, dir);
       if(!(slope < 0)) { // not a descent direction: the gradient
         memory.clear();
+        memory_hy.clear();
         dir = g;
         for(Vec3& v : dir) for(double& c : v) c = -c;
         slope = inner(g, dir);
@@ -213,6 +273,14 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
         yk[v] = sub(g_new[v], g[v]);
       }
       if(inner(sk, yk) > 1e-300) {
+        if(preconditioned) { // yᵀ H₀ y for the scale of H₀
+          std::vector<Vec3> hy = yk;
+          project(y, hy);
+          apply_stiffness_inverse(y, hy);
+          project(y, hy);
+          memory_hy.push_back(inner(yk, hy));
+          if(memory_hy.size() > 8) memory_hy.pop_front();
+        }
         memory.emplace_back(std::move(sk), std::move(yk));
         if(memory.size() > 8) memory.pop_front();
       }
@@ -248,6 +316,7 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
         E = evaluate(x, eps, &g);
         project(x, g);
         memory.clear();
+        memory_hy.clear();
         continue;
       }
       if(drop < 1e-6) break;
