@@ -90,6 +90,7 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
   int ndof = 0;
   for(std::size_t v = 0; v < V; ++v) if(on_border[v] != 2) dof[v] = ndof++;
   Default_spd_solver stiffness;
+  Sparse_matrix L; // lower triangle
   bool preconditioned = false;
   if(ndof > 0) {
     std::vector<Eigen::Triplet<double> > entries;
@@ -111,7 +112,7 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
       }
     }
     for(int i = 0; i < ndof; ++i) entries.emplace_back(i, i, 1e-8 * diagonal[std::size_t(i)] + 1e-300);
-    Sparse_matrix L(ndof, ndof);
+    L.resize(ndof, ndof);
     L.setFromTriplets(entries.begin(), entries.end());
     stiffness.compute(L);
     preconditioned = stiffness.info() == Eigen::Success;
@@ -127,6 +128,15 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
       if(dof[v] >= 0) for(int c = 0; c < 3; ++c) dir[v][std::size_t(c)] = sol(dof[v], c);
       else dir[v] = {{ 0, 0, 0 }};
     (void)y;
+  };
+  // sᵀ L s, for the scale of H₀ = γ L⁻¹: γ = sᵀLs / sᵀy (the curvature along
+  // s over the stiffness's), without a second solve.
+  auto stiffness_norm = [&](const std::vector<Vec3>& sk) {
+    Eigen::MatrixXd S(ndof, 3);
+    for(std::size_t v = 0; v < V; ++v)
+      if(dof[v] >= 0) for(int c = 0; c < 3; ++c) S(dof[v], c) = sk[v][std::size_t(c)];
+    const Eigen::MatrixXd LS = L.selfadjointView<Eigen::Lower>() * S;
+    return (S.array() * LS.array()).sum();
   };
   // Energy and gradient (per vertex, ambient) at fixed ε.
   std::vector<double> dets(T);
@@ -210,7 +220,7 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
     project(x, g);
     const double E_round = E;
     std::deque<std::pair<std::vector<Vec3>, std::vector<Vec3> > > memory; // (s_k, y_k)
-    std::deque<double> memory_hy; // y_kᵀ H₀ y_k
+    std::deque<double> memory_sls; // s_kᵀ L s_k
     for(int it = 0; it < 200 && out.iterations < max_iterations; ++it) {
       // Two-loop recursion.
       dir = g;
@@ -226,7 +236,7 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
         apply_stiffness_inverse(x, dir);
         project(x, dir);
         if(!memory.empty()) {
-          const double gamma = inner(memory.back().first, memory.back().second) / memory_hy.back();
+          const double gamma = memory_sls.back() / inner(memory.back().first, memory.back().second);
           for(Vec3& v : dir) for(double& c : v) c *= gamma;
         }
       } else if(!memory.empty()) {
@@ -244,7 +254,7 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
       double slope = inner(g, dir);
       if(!(slope < 0)) { // not a descent direction: the gradient
         memory.clear();
-        memory_hy.clear();
+        memory_sls.clear();
         dir = g;
         for(Vec3& v : dir) for(double& c : v) c = -c;
         slope = inner(g, dir);
@@ -273,13 +283,9 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
         yk[v] = sub(g_new[v], g[v]);
       }
       if(inner(sk, yk) > 1e-300) {
-        if(preconditioned) { // yᵀ H₀ y for the scale of H₀
-          std::vector<Vec3> hy = yk;
-          project(y, hy);
-          apply_stiffness_inverse(y, hy);
-          project(y, hy);
-          memory_hy.push_back(inner(yk, hy));
-          if(memory_hy.size() > 8) memory_hy.pop_front();
+        if(preconditioned) {
+          memory_sls.push_back(stiffness_norm(sk));
+          if(memory_sls.size() > 8) memory_sls.pop_front();
         }
         memory.emplace_back(std::move(sk), std::move(yk));
         if(memory.size() > 8) memory.pop_front();
@@ -316,7 +322,7 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
         E = evaluate(x, eps, &g);
         project(x, g);
         memory.clear();
-        memory_hy.clear();
+        memory_sls.clear();
         continue;
       }
       if(drop < 1e-6) break;
