@@ -442,12 +442,13 @@ TEST(Volume, CholeskyPreconditionerFactorisesTheGaussNewtonMatrixItself)
 
 TEST(Volume, UntanglingOfAGradedMeshConvergesQuickly)
 {
-  // A grid graded along x (each layer of cells twice as wide as the last),
-  // nine interior vertices thrown across the ball: the untangling's
-  // L-BFGS starts from the reference stiffness, so that its steps do not
-  // depend on the cells' sizes.
+  // A grid graded along x (each layer of cells 1.5 times as wide as the
+  // last), nine interior vertices thrown across the ball (about 80 tets
+  // inverted): the untangling's L-BFGS starts from the reference stiffness,
+  // so that its steps do not depend on the cells' sizes. It untangles in
+  // about 90 iterations; plain L-BFGS needs about 150.
   Tet_mesh m = full_grid(6);
-  for(Point& p : m.points) p = Point(std::pow(2., p.x()) - 1, p.y(), p.z());
+  for(Point& p : m.points) p = Point(std::pow(1.5, p.x()) - 1, p.y(), p.z());
   std::vector<D::Vec3> xyz;
   for(const Point& p : m.points) xyz.push_back({{ p.x(), p.y(), p.z() }});
   D::Ball_topology topo;
@@ -465,12 +466,12 @@ TEST(Volume, UntanglingOfAGradedMeshConvergesQuickly)
     D::Vec3& p = y[interior[i]];
     p = {{ -0.8 * p[1], 0.8 * p[0], -0.8 * p[2] }};
   }
-  ASSERT_GT(D::count_bad_tets(y, m.tets).negative, 20u);
+  ASSERT_GT(D::count_bad_tets(y, m.tets).negative, 60u);
   std::vector<double> target;
   for(const auto& k : m.tets)
     target.push_back(D::tet_det(xyz[std::size_t(k[0])], xyz[std::size_t(k[1])], xyz[std::size_t(k[2])], xyz[std::size_t(k[3])]));
-  const D::Untangle_outcome out = D::untangle_volume(y, m.tets, topo.on_border, topo.border_faces, xyz, target, 400, nullptr);
-  EXPECT_TRUE(out.success) << out.iterations; // plain L-BFGS: still folded after 400
+  const D::Untangle_outcome out = D::untangle_volume(y, m.tets, topo.on_border, topo.border_faces, xyz, target, 130, nullptr);
+  EXPECT_TRUE(out.success) << out.iterations;
   EXPECT_EQ(D::count_bad_tets(y, m.tets).not_positive(), 0u);
   EXPECT_EQ(D::count_bad_border_faces(y, topo.border_faces), 0u);
 }
