@@ -9,10 +9,11 @@
 // (1 − θ) tr(JᵀJ)/χ(det J)^{2/3} + θ (det J² + 1)/χ(det J); it is
 // minimised by L-BFGS at fixed ε, and ε shrinks between rounds so that the
 // smallest regularised determinant shrinks by 1 − σ (σ the round's relative
-// energy drop, at least 0.1). The interior vertices move in space, the
-// border vertices slide on the unit sphere. It stops as soon as every tet
-// and every border triangle (seen from the centre) is positive by the exact
-// predicate.
+// energy drop, at least 0.1); L-BFGS's initial inverse Hessian is the
+// inverse stiffness of the reference tets. The interior vertices move in
+// space, the border vertices slide on the unit sphere. It stops as soon as
+// every tet and every border triangle (seen from the centre) is positive by
+// the exact predicate.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_UNTANGLE_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_UNTANGLE_H
@@ -79,13 +80,13 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
       weight[t] = share;
     }
   }
-  // The L-BFGS's initial inverse Hessian: the stiffness of the shape term
-  // at the reference, Σ_t weight_t (∇β_t)(∇β_t)ᵀ (∇β the gradients of the
-  // tet's barycentric coordinates in the reference scaled to its target,
-  // i.e. the columns of D A with D the edge map), one scalar matrix for the
-  // three coordinates, the fixed vertices eliminated; factorised once. On
-  // Mesh_3's graded meshes it makes the directions independent of the
-  // element sizes, which plain L-BFGS is not.
+  // The L-BFGS's initial inverse Hessian γ L⁻¹, L the stiffness of the
+  // shape term at the reference: Σ_t weight_t B_t B_tᵀ, the rows of B_t the
+  // gradients of the tet's barycentric coordinates in its scaled reference
+  // (∇β_1…∇β_3 the rows of A, ∇β_0 minus their sum), one scalar matrix for
+  // the three coordinates, the fixed vertices eliminated; factorised once.
+  // On Mesh_3's graded meshes it makes the steps independent of the
+  // element sizes, which plain L-BFGS's are not.
   std::vector<int> dof(V, -1);
   int ndof = 0;
   for(std::size_t v = 0; v < V; ++v) if(on_border[v] != 2) dof[v] = ndof++;
@@ -119,7 +120,7 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
   }
   // dir ← P L⁻¹ P dir (P: the tangent planes of the border vertices).
   Eigen::MatrixXd rhs;
-  auto apply_stiffness_inverse = [&](const std::vector<Vec3>& y, std::vector<Vec3>& dir) {
+  auto apply_stiffness_inverse = [&](std::vector<Vec3>& dir) {
     rhs.resize(ndof, 3);
     for(std::size_t v = 0; v < V; ++v)
       if(dof[v] >= 0) for(int c = 0; c < 3; ++c) rhs(dof[v], c) = dir[v][std::size_t(c)];
@@ -127,7 +128,6 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
     for(std::size_t v = 0; v < V; ++v)
       if(dof[v] >= 0) for(int c = 0; c < 3; ++c) dir[v][std::size_t(c)] = sol(dof[v], c);
       else dir[v] = {{ 0, 0, 0 }};
-    (void)y;
   };
   // sᵀ L s, for the scale of H₀ = γ L⁻¹: γ = sᵀLs / sᵀy (the curvature along
   // s over the stiffness's), without a second solve.
@@ -233,7 +233,7 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
       }
       if(preconditioned) {
         project(x, dir);
-        apply_stiffness_inverse(x, dir);
+        apply_stiffness_inverse(dir);
         project(x, dir);
         if(!memory.empty()) {
           const double gamma = memory_sls.back() / inner(memory.back().first, memory.back().second);
