@@ -789,6 +789,10 @@ check "volume --border-start conformal --border-max-iterations 0: converged from
   "0 converged iteration_cap conformal 0"
 check "volume --border-start conformal: the border's D_area is the conformal start's, above the flow's" \
   number_is "$(json_get vol_conformal.json start border_d_area)" ">" "$(json_get vol.json start border_d_area)"
+"$DLF" volume vol_sphere.mesh --cholesky-every 1 --report vol_chol.json -q
+check "volume --cholesky-every 1: converged, one conjugate-gradient step per iteration (the factorisation is the matrix solved)" \
+  equals "$(json_get vol_chol.json "" stop_reason) $(json_get vol_chol.json counters cg_iterations)" \
+  "converged $(json_get vol_chol.json "" iterations)"
 "$DLF" volume vol_sphere.mesh --border-start foo 2> vol_border_start.err
 check "volume --border-start foo: exit 1, named" equals "$? $(grep -c 'border-start takes tutte or conformal' vol_border_start.err)" "1 1"
 printf 'MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\nTetrahedra\n1\n1 2 4 3 1\nEnd\n' > vol_inverted.mesh

@@ -131,6 +131,9 @@ int volume_command(const std::vector<std::string>& args)
     ("mu", po::value<double>(&options.mu), "fraction of the critical step, in (0, 1) (default 0.8)")
     ("cg-iterations", po::value<std::size_t>(&options.cg_max_iterations),
      "conjugate-gradient cap of each Gauss-Newton solve (default 60)")
+    ("cholesky-every", po::value<std::size_t>(&options.cholesky_every)->value_name("K"),
+     "precondition the conjugate gradients by a sparse Cholesky factorisation of the Gauss-Newton matrix, "
+     "refreshed every K iterations (default 0: the 3x3 blocks of every vertex)")
     ("untangle-iterations", po::value<std::size_t>(&options.untangle_max_iterations)->value_name("N"),
      "iteration cap of the start's untangling, its 4 stages together (default 12000; at most 10000 per stage)")
     ("border-start", po::value<std::string>(&border_start)->value_name("tutte|conformal"),

@@ -35,6 +35,12 @@ struct Discrete_lie_flow_volume_options
   std::size_t max_iterations = 300; ///< iteration cap of the flow
   double mu = 0.8;                  ///< fraction of the critical step, in (0, 1)
   std::size_t cg_max_iterations = 60; ///< conjugate-gradient cap of each Gauss–Newton solve
+  /// The conjugate gradients' preconditioner: 0 (the default) the 3 × 3
+  /// blocks of every vertex; k > 0 a sparse Cholesky factorisation of the
+  /// whole Gauss–Newton matrix, refreshed every k iterations (fewer
+  /// iterations to a lower D_vol on meshes with protrusions, each several
+  /// times dearer; doc/volume.md).
+  std::size_t cholesky_every = 0;
   /// Iteration cap of the start's untangling, its stages together (each
   /// stage at most 10,000; volume_untangle.h).
   std::size_t untangle_max_iterations = 12000;
@@ -284,6 +290,7 @@ private:
     S.max_iterations = O.max_iterations;
     S.mu = O.mu;
     S.cg_max_iterations = O.cg_max_iterations;
+    S.cholesky_every = O.cholesky_every;
     S.star_shaped_border = O.star_shaped_border;
     S.share_tolerance = O.share_tolerance;
     if(!O.tet_density.empty() && O.share_tolerance > 0) {

@@ -13,6 +13,7 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_FLOW_H
 
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/critical_step.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_mesh.h>
 
 #include <Eigen/Dense>
@@ -80,6 +81,10 @@ struct Volume_flow_settings
   /// Keep every border triangle positive seen from the centre (a
   /// star-shaped border: with positive tets, a certificate of bijectivity).
   bool star_shaped_border = true;
+  /// The conjugate gradients' preconditioner: a sparse Cholesky
+  /// factorisation of the Gauss–Newton matrix, refreshed every this many
+  /// iterations (0: block Jacobi, the 3 × 3 blocks of every vertex).
+  std::size_t cholesky_every = 0;
   std::function<bool(const Volume_iteration&)> callback; ///< false: stop (INTERRUPTED)
   /// Measure control: the level (0, 1, ...) of every tet (empty: none);
   /// converged also needs every level's share of the volume within
@@ -284,6 +289,20 @@ public:
     }
   }
   bool on_border(std::size_t v) const { return m_border[v] != 0; }
+  /// The first dof of vertex v and how many it has (0, 2 or 3); `c`
+  /// receives the dof components of the ambient vector g.
+  int components(std::size_t v, const Vec3& g, double c[3]) const
+  {
+    if(m_border[v] && m_fixed) return 0;
+    if(m_border[v]) {
+      c[0] = dot(g, m_frame[v][0]);
+      c[1] = dot(g, m_frame[v][1]);
+      return 2;
+    }
+    c[0] = g[0]; c[1] = g[1]; c[2] = g[2];
+    return 3;
+  }
+  int offset(std::size_t v) const { return m_offset[v]; }
 
 private:
   std::vector<int> m_offset;
@@ -342,6 +361,12 @@ inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vect
   tet_dets(x, tets, u);
   double E = energy.value(u, eps);
   double lambda = 1e-3; // Levenberg–Marquardt
+  // The Cholesky preconditioner (the pattern does not change between iterations).
+  std::vector<Eigen::Triplet<double> > triplets;
+  Sparse_matrix H;
+  Default_spd_solver factor;
+  bool analyzed = false, factored = false;
+  std::size_t factor_it = 0;
   std::size_t flat = 0;
   for(std::size_t it = 0;; ++it) {
     if(E - 2 <= S.tolerance && level_share_error(S.level, S.level_share, u) <= S.share_tolerance) {
@@ -394,9 +419,45 @@ inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vect
     };
     dofs.block_inverse(M, lambda, Minv);
     const int n = dofs.size();
+    if(S.cholesky_every > 0 && (it - factor_it >= S.cholesky_every || !factored)) {
+      // The Gauss–Newton matrix, lower triangle: per tet w_t (P G_a)(P G_b)ᵀ
+      // for its corners a, b (P the vertex's dof frame), and the
+      // regularisation of apply_regularization.
+      triplets.clear();
+      for(std::size_t t = 0; t < T; ++t) {
+        const Tet& k = tets[t];
+        double c[4][3];
+        int m[4], o[4];
+        for(int j = 0; j < 4; ++j) {
+          m[j] = dofs.components(std::size_t(k[std::size_t(j)]), grad[t][std::size_t(j)], c[j]);
+          o[j] = dofs.offset(std::size_t(k[std::size_t(j)]));
+        }
+        for(int a = 0; a < 4; ++a)
+          for(int b = 0; b < 4; ++b)
+            for(int i = 0; i < m[a]; ++i)
+              for(int l = 0; l < m[b]; ++l)
+                if(o[a] + i >= o[b] + l) triplets.emplace_back(o[a] + i, o[b] + l, w[t] * c[a][i] * c[b][l]);
+      }
+      for(std::size_t v = 0; v < V; ++v) {
+        double c[3];
+        const int m = dofs.components(v, Vec3{{ 0, 0, 0 }}, c);
+        const double reg = lambda * (M[v][0] + M[v][1] + M[v][2]) / 3;
+        for(int i = 0; i < m; ++i) triplets.emplace_back(dofs.offset(v) + i, dofs.offset(v) + i, reg);
+      }
+      H.resize(n, n);
+      H.setFromTriplets(triplets.begin(), triplets.end());
+      if(!analyzed) { factor.analyzePattern(H); analyzed = true; }
+      factor.factorize(H);
+      factored = factor.info() == Eigen::Success;
+      factor_it = it;
+    }
+    auto precondition = [&](const Eigen::VectorXd& in, Eigen::VectorXd& o) {
+      if(factored) o = factor.solve(in);
+      else dofs.apply_block(Minv, in, o);
+    };
     s = Eigen::VectorXd::Zero(n);
     r = -g;
-    dofs.apply_block(Minv, r, z);
+    precondition(r, z);
     p = z;
     double rz = r.dot(z);
     const double r0 = r.norm();
@@ -408,7 +469,7 @@ inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vect
       const double alpha = rz / pq;
       s += alpha * p;
       r -= alpha * q;
-      dofs.apply_block(Minv, r, z);
+      precondition(r, z);
       const double rz_new = r.dot(z);
       p = z + (rz_new / rz) * p;
       rz = rz_new;
