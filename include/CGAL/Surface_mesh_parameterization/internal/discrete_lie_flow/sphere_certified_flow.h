@@ -125,11 +125,12 @@ struct Sphere_flow_settings
   /// direction nearly inverts a few slivers and every step is capped at
   /// 0.02–0.07; the smoother direction of a larger ε takes long steps
   /// there. Elsewhere the ceiling stays the starting ε: growing to 1e4
-  /// everywhere lost the refined part.off's convergence, and with any
-  /// polish above D_area 2.5 bull's plateau came 19% later. Measurements:
-  /// doc/sphere.md, "A compressed start on an irregular mesh".
+  /// everywhere lost the refined part.off's convergence. A ceiling of 1
+  /// instead of 0.1 saved two more iterations there but took bull's
+  /// plateau from 314 to 373 iterations. Measurements: doc/sphere.md,
+  /// "A compressed start on an irregular mesh".
   double capped_far_above = 2.5;
-  double capped_far_ceiling = 1;
+  double capped_far_ceiling = 0.1;
 };
 
 /// Levenberg–Marquardt update of the polish's ε after an accepted step of
