@@ -946,6 +946,36 @@ TEST(Sphere_flow, CappedStepsDoNotShrinkTheRegularization)
   EXPECT_DOUBLE_EQ(D::sphere_regularization(1e4, halved, ceiling), 1e4);
 }
 
+TEST(Sphere_flow, CappedStepsAfterACrawlRegularizeMore)
+{
+  // In a polish that a crawling opening started far from the targets
+  // (D_area 2.8), capped steps let ε grow past its starting value, up to
+  // capped_far_ceiling; nearer the targets (D_area 2.05), or in a polish
+  // started otherwise, only back to the start.
+  const D::Sphere_flow_settings s;
+  ASSERT_GT(s.capped_far_ceiling, s.newton_regularization);
+  ASSERT_LT(s.capped_far_above, 2.8);
+  ASSERT_LT(s.capped_far_above, s.crawl_far_below);
+  ASSERT_GT(s.capped_far_above, s.newton_below);
+  D::Flow_step tiny, full;
+  tiny.lambda = 1e-3;
+  full.lambda = 1;
+  EXPECT_DOUBLE_EQ(D::sphere_capped_ceiling(s, 2.8, true), s.capped_far_ceiling);
+  EXPECT_DOUBLE_EQ(D::sphere_capped_ceiling(s, 2.8, false), s.newton_regularization);
+  EXPECT_DOUBLE_EQ(D::sphere_capped_ceiling(s, 2.05, true), s.newton_regularization);
+  double after_crawl = s.newton_regularization, other = s.newton_regularization, near = s.newton_regularization;
+  for(int k = 0; k < 20; ++k) {
+    after_crawl = D::sphere_regularization(after_crawl, tiny, D::sphere_capped_ceiling(s, 2.8, true));
+    other = D::sphere_regularization(other, tiny, D::sphere_capped_ceiling(s, 2.8, false));
+    near = D::sphere_regularization(near, tiny, D::sphere_capped_ceiling(s, 2.05, true));
+  }
+  EXPECT_DOUBLE_EQ(after_crawl, s.capped_far_ceiling);
+  EXPECT_DOUBLE_EQ(other, s.newton_regularization);
+  EXPECT_DOUBLE_EQ(near, s.newton_regularization);
+  // A full step near the targets shrinks the large ε again, by 4.
+  EXPECT_DOUBLE_EQ(D::sphere_regularization(after_crawl, full, D::sphere_capped_ceiling(s, 2.05, true)), s.capped_far_ceiling / 4);
+}
+
 TEST(Sphere_map, TinyMeshes)
 {
   // Few faces: the map exists and is certified; the area targets may be out of reach.

@@ -117,6 +117,20 @@ struct Sphere_flow_settings
   /// Levenberg–Marquardt update from the accepted step's length, not only
   /// its halvings (see `sphere_regularization()`).
   bool capped_steps_regularize = true;
+  /// In a polish that a crawling opening started (`crawl_far_steps`), while
+  /// the flat D_area is above `capped_far_above`, a capped step lets ε grow
+  /// up to `capped_far_ceiling` instead of only back to
+  /// `newton_regularization`. Irregular meshes crawl at D_area 2.8
+  /// (diplodocus Loop×1 jittered), where the least regularised Gauss–Newton
+  /// direction nearly inverts a few slivers and every step is capped at
+  /// 0.02–0.07; the smoother direction of a larger ε takes long steps
+  /// there. Elsewhere the ceiling stays the starting ε: growing to 1e4
+  /// everywhere lost the refined part.off's convergence. A ceiling of 1
+  /// instead of 0.1 saved two more iterations there but took bull's
+  /// plateau from 314 to 373 iterations. Measurements: doc/sphere.md,
+  /// "A compressed start on an irregular mesh".
+  double capped_far_above = 2.5;
+  double capped_far_ceiling = 0.1;
 };
 
 /// Levenberg–Marquardt update of the polish's ε after an accepted step of
@@ -137,6 +151,14 @@ inline double sphere_regularization(double eps, const Flow_step& step, double ca
   if(step.halvings >= 2) return (std::min)(eps * 4, 1e4);
   if(step.lambda >= 0.5) return eps;
   return (std::max)(eps, (std::min)(eps * (std::min)(4., 1 / step.lambda), capped_ceiling));
+}
+
+/// The most a capped step lets the polish's ε grow to at flat D_area
+/// `d_area`, in a polish that a crawling opening started or not (see
+/// `Sphere_flow_settings::capped_far_ceiling`).
+inline double sphere_capped_ceiling(const Sphere_flow_settings& settings, double d_area, bool after_crawl)
+{
+  return after_crawl && d_area > settings.capped_far_above ? settings.capped_far_ceiling : settings.newton_regularization;
 }
 
 /// The certified spherical flow as a policy of `run_flow()` (flow_driver.h),
@@ -241,7 +263,11 @@ public:
 
   void commit(const Flow_step& step, Flow_outcome& out)
   {
-    if(m_newton) m_eps = m_settings.capped_steps_regularize ? sphere_regularization(m_eps, step, m_settings.newton_regularization) : updated_regularization(m_eps, step.halvings);
+    if(m_newton) {
+      // m_D is still the D_area the step started from.
+      m_eps = m_settings.capped_steps_regularize ? sphere_regularization(m_eps, step, sphere_capped_ceiling(m_settings, m_D, m_after_crawl))
+                                                 : updated_regularization(m_eps, step.halvings);
+    }
     m_p_prev = m_p;
     m_g_prev = m_g;
     m_p.swap(m_trial);
@@ -261,6 +287,7 @@ public:
       m_best_cone_D = (std::min)(m_best_cone_D, m_D);
       m_crawling = (m_D < m_settings.crawl_below && step.lambda < m_settings.crawl_step) ? m_crawling + 1 : 0;
       m_crawling_far = (m_D < m_settings.crawl_far_below && step.lambda < m_settings.crawl_step) ? m_crawling_far + 1 : 0;
+      m_after_crawl = m_rising < 3 && m_crawling < 3 && m_crawling_far >= m_settings.crawl_far_steps;
       if(m_rising >= 3 || m_crawling >= 3 || m_crawling_far >= m_settings.crawl_far_steps) m_force_polish = true;
     }
     // In the polish the mean |log r| may still fall while E hardly moves: a
@@ -513,6 +540,7 @@ private:
   std::vector<std::vector<Vec3> > m_pairs_s, m_pairs_y;
   std::vector<Vec3> m_g, m_d, m_trial;
   bool m_polish = false, m_force_polish = false, m_newton = false;
+  bool m_after_crawl = false; // the polish was started by crawl_far_steps short steps
   double m_best_cone_D = infinite_step();
   std::size_t m_rising = 0, m_crawling = 0, m_crawling_far = 0;
   std::vector<int> m_limiters; // the faces that limited the last opening steps
