@@ -789,6 +789,9 @@ check "volume --border-start conformal --border-max-iterations 0: converged from
   "0 converged iteration_cap conformal 0"
 check "volume --border-start conformal: the border's D_area is the conformal start's, above the flow's" \
   number_is "$(json_get vol_conformal.json start border_d_area)" ">" "$(json_get vol.json start border_d_area)"
+"$DLF" volume vol_sphere.mesh -v --report vol_verbose.json > vol_verbose.out
+check "volume -v: a line per flow iteration, as many as reported" equals \
+  "$(grep -c '^flow ' vol_verbose.out)" "$(json_get vol_verbose.json "" iterations)"
 "$DLF" volume vol_sphere.mesh --cholesky-every 1 --report vol_chol.json -q
 check "volume --cholesky-every 1: converged, one conjugate-gradient step per iteration (the factorisation is the matrix solved)" \
   equals "$(json_get vol_chol.json "" stop_reason) $(json_get vol_chol.json counters cg_iterations)" \

@@ -293,6 +293,7 @@ private:
     S.cholesky_every = O.cholesky_every;
     S.star_shaped_border = O.star_shaped_border;
     S.share_tolerance = O.share_tolerance;
+    S.callback = O.callback; // the flow's iterations too, not only the start's
     if(!O.tet_density.empty() && O.share_tolerance > 0) {
       std::map<double, int> ids;
       for(double rho : O.tet_density) {
