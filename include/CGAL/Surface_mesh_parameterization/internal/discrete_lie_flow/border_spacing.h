@@ -146,11 +146,23 @@ class Tutte_interior_system
 {
 public:
   /// Assembles and factorises the system of `P`'s `n` vertices with `solver`.
+  /// Only the factor and the border coupling are kept (the system lives as
+  /// long as the flow).
   Tutte_interior_system(const Disk_problem& P, std::size_t n, EigenSolver& solver) : m_solver(solver)
   {
-    m_unknowns = tutte_interior_matrix(P, n, m_interior, m_neighbours, m_A);
-    m_A.makeCompressed();
-    m_factorized = m_unknowns > 0 && m_solver.factorize(m_A);
+    std::vector<std::vector<int> > neighbours;
+    Sparse_matrix A;
+    m_unknowns = tutte_interior_matrix(P, n, m_interior, neighbours, A);
+    A.makeCompressed();
+    m_factorized = m_unknowns > 0 && m_solver.factorize(A);
+    // rhs = B uv: each interior vertex sums its border neighbours.
+    std::vector<Eigen::Triplet<double> > coupling;
+    for(std::size_t v = 0; v < n; ++v)
+      if(m_interior[v] >= 0)
+        for(int w : neighbours[v])
+          if(m_interior[std::size_t(w)] < 0) coupling.emplace_back(m_interior[v], w, 1.);
+    m_B.resize(m_unknowns, Eigen::Index(n));
+    m_B.setFromTriplets(coupling.begin(), coupling.end());
   }
 
   /// The number of interior vertices.
@@ -166,16 +178,10 @@ public:
   {
     if(m_unknowns == 0) return true;
     if(!m_factorized) return false;
-    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(m_unknowns, 2), x;
-    for(std::size_t v = 0; v < m_interior.size(); ++v) {
-      if(m_interior[v] < 0) continue;
-      for(int w : m_neighbours[v])
-        if(m_interior[std::size_t(w)] < 0) {
-          rhs(m_interior[v], 0) += uv[std::size_t(w)][0];
-          rhs(m_interior[v], 1) += uv[std::size_t(w)][1];
-        }
-    }
-    if(!m_solver.solve(rhs, x)) return false;
+    Eigen::MatrixXd border = Eigen::MatrixXd::Zero(m_B.cols(), 2), x;
+    for(std::size_t v = 0; v < uv.size(); ++v)
+      if(m_interior[v] < 0) border.row(Eigen::Index(v)) << uv[v][0], uv[v][1];
+    if(!m_solver.solve(Eigen::MatrixXd(m_B * border), x)) return false;
     for(std::size_t v = 0; v < m_interior.size(); ++v)
       if(m_interior[v] >= 0) uv[v] = {{ x(m_interior[v], 0), x(m_interior[v], 1) }};
     return true;
@@ -187,8 +193,7 @@ public:
 private:
   Pattern_reusing_solver<EigenSolver> m_solver;
   std::vector<int> m_interior;
-  std::vector<std::vector<int> > m_neighbours;
-  Sparse_matrix m_A;
+  Sparse_matrix m_B; // interior × all vertices: 1 for each border neighbour
   int m_unknowns = 0;
   bool m_factorized = false;
 };
