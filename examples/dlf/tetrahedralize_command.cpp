@@ -77,7 +77,7 @@ const char* tetrahedralize_help =
 int tetrahedralize_command(const std::vector<std::string>& args)
 {
   std::string output, input;
-  double size = 0;
+  double size = 0, cell_ratio = 1, distance_ratio = 0.05;
   std::size_t target_tets = 0;
   po::options_description visible("Options");
   visible.add_options()
@@ -87,6 +87,10 @@ int tetrahedralize_command(const std::vector<std::string>& args)
      "a size bound derived from N and the solid's volume (default 10000; Mesh_3 makes about 0.4 to 0.7 N tetrahedra on CGAL's meshes)")
     ("size", po::value<double>(&size)->value_name("S"),
      "the tetrahedra's size bound as a fraction of the bounding box's diagonal (instead of --tets)")
+    ("cell-ratio", po::value<double>(&cell_ratio)->value_name("R"),
+     "the tetrahedra's size bound over the border triangles' (default 1)")
+    ("distance-ratio", po::value<double>(&distance_ratio)->value_name("D"),
+     "the border triangles' distance bound to the surface over their size bound (default 0.05)")
     ("no-optimize", "skip the sliver perturbation and exudation (faster, worse tetrahedra)")
     ("quiet,q", "print nothing on success");
   const po::variables_map vm = parse_command_line("tetrahedralize", args, visible, "input");
@@ -102,6 +106,8 @@ int tetrahedralize_command(const std::vector<std::string>& args)
   if(vm.count("size") && !(size > 0 && size < 1)) throw Cli_error("--size must lie in (0, 1)");
   if(vm.count("tets") && target_tets < 10) throw Cli_error("--tets must be at least 10");
   if(!vm.count("size") && !vm.count("tets")) target_tets = 10000;
+  if(!(cell_ratio > 0 && cell_ratio <= 10)) throw Cli_error("--cell-ratio must lie in (0, 10]");
+  if(!(distance_ratio > 0 && distance_ratio <= 1)) throw Cli_error("--distance-ratio must lie in (0, 1]");
   const bool quiet = vm.count("quiet") != 0;
   Output_files files;
   files.declare(output, "-o");
@@ -137,8 +143,8 @@ int tetrahedralize_command(const std::vector<std::string>& args)
   CGAL::get_default_random() = CGAL::Random(0);
   Mesh_domain domain(poly);
   namespace params = CGAL::parameters;
-  Mesh_criteria criteria(params::facet_angle = 25, params::facet_size = s, params::facet_distance = 0.05 * s,
-                         params::cell_radius_edge_ratio = 3, params::cell_size = s);
+  Mesh_criteria criteria(params::facet_angle = 25, params::facet_size = s, params::facet_distance = distance_ratio * s,
+                         params::cell_radius_edge_ratio = 3, params::cell_size = cell_ratio * s);
   C3t3 c3t3 = vm.count("no-optimize")
     ? CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude(), params::manifold())
     : CGAL::make_mesh_3<C3t3>(domain, criteria, params::manifold());
