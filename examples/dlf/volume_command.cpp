@@ -127,7 +127,7 @@ int volume_command(const std::vector<std::string>& args)
     ("share-tolerance", po::value<double>(&options.share_tolerance),
      "... and, with a density, the tetrahedra of every density value within this of their share, relative "
      "(default 0.005; 0: no such test)")
-    ("max-iterations", po::value<std::size_t>(&options.max_iterations), "iteration cap (default 300)")
+    ("max-iterations", po::value<std::size_t>(&options.max_iterations), "iteration cap (default 1000)")
     ("mu", po::value<double>(&options.mu), "fraction of the critical step, in (0, 1) (default 0.8)")
     ("cg-iterations", po::value<std::size_t>(&options.cg_max_iterations),
      "conjugate-gradient cap of each Gauss-Newton solve (default 60)")

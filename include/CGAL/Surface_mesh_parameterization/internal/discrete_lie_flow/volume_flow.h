@@ -73,7 +73,7 @@ struct Volume_iteration
 struct Volume_flow_settings
 {
   double tolerance = 0.01;         ///< stop when D_vol − 2 ≤ tolerance
-  std::size_t max_iterations = 300;
+  std::size_t max_iterations = 1000;
   double mu = 0.8;                 ///< fraction of the critical step
   std::size_t cg_max_iterations = 200;
   double cg_tolerance = 1e-3;      ///< relative residual of the inexact Gauss–Newton solve
