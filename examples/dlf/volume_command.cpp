@@ -230,9 +230,9 @@ int volume_command(const std::vector<std::string>& args)
     options.callback = [in_place, verbose](const D::Volume_iteration& I) {
       if(!in_place && !verbose && I.iteration % 10 != 0) return true;
       std::printf("%s%s %4zu  step %.3g  %s %.6g  cg %zu  %.1f s%s", in_place ? "\r" : "",
-                  I.epsilon > 0 ? "untangle" : "flow", I.iteration, I.step, I.epsilon > 0 ? "energy" : "d_vol", I.d_vol,
+                  I.untangling ? "untangle" : "flow", I.iteration, I.step, I.untangling ? "energy" : "d_vol", I.d_vol,
                   I.cg_iterations, I.seconds, in_place ? "   " : "\n");
-      if(I.epsilon > 0 && !in_place) std::printf("    eps %.3g, %zu negative tets\n", I.epsilon, I.negative_tets);
+      if(I.untangling && !in_place) std::printf("    eps %.3g, %zu negative tets\n", I.epsilon, I.negative_tets);
       std::fflush(stdout);
       return true;
     };

@@ -64,6 +64,7 @@ struct Volume_iteration
   double critical_step = 0;  ///< the smallest critical step of the direction
   double d_vol = 0;          ///< D_vol after the step (with ε > 0: the regularised energy)
   double epsilon = 0;        ///< the untangling's ε, 0 in the certified flow
+  bool untangling = false;   ///< an iteration of the start's untangling (its polish at ε = 0 too)
   std::size_t negative_tets = 0; ///< by the doubles, after the step (untangling)
   std::size_t cg_iterations = 0;
   double seconds = 0;        ///< since the flow started
