@@ -758,7 +758,7 @@ if [ "${DLF_TETRAHEDRALIZE:-1}" = 0 ]; then
     "$? $(grep -c 'built without CGAL.s Mesh_3' vol_tet.err) $(ls vol_sphere.mesh 2> /dev/null | wc -l)" "2 1 0"
   cp "$TEST_DATA/sphere_tets.mesh" vol_sphere.mesh
 else
-  "$DLF" tetrahedralize "$MESHES/sphere.off" -o vol_sphere.mesh --tets 4000 -q
+  "$DLF" tetrahedralize "$MESHES/sphere.off" -o vol_sphere.mesh --tets 6000 -q
   check "tetrahedralize sphere.off: exit 0" equals "$?" 0
   check "tetrahedralize: a Tetrahedra section" grep -q '^Tetrahedra' vol_sphere.mesh
 fi
@@ -811,10 +811,10 @@ if [ "${DLF_TETRAHEDRALIZE:-1}" != 0 ]; then
   "$DLF" tetrahedralize "$MESHES/sphere.off" -o vol_ratio.mesh --facet-ratio 0.5 2> vol_ratio.err
   check "tetrahedralize --facet-ratio 0.5: refused (exit 1), named, nothing written" equals \
     "$? $(grep -c 'facet-ratio must lie in' vol_ratio.err) $(ls vol_ratio.mesh 2> /dev/null | wc -l)" "1 1 0"
-  check "tetrahedralize --tets 4000: between 2000 and 8000 tetrahedra" /usr/bin/python3 - vol_sphere.mesh <<'PY'
+  check "tetrahedralize --tets 6000: between 3000 and 12000 tetrahedra" /usr/bin/python3 - vol_sphere.mesh <<'PY'
 import sys
 w = open(sys.argv[1]).read().split()
-sys.exit(0 if 2000 <= int(w[w.index("Tetrahedra") + 1]) <= 8000 else 1)
+sys.exit(0 if 3000 <= int(w[w.index("Tetrahedra") + 1]) <= 12000 else 1)
 PY
   # A shape with thin legs: border triangles 3 times the tetrahedra's size
   # (the default) leave far fewer vertices on the border than Mesh_3's

@@ -81,7 +81,7 @@ const char* tetrahedralize_help =
 int tetrahedralize_command(const std::vector<std::string>& args)
 {
   std::string output, input;
-  double size = 0, facet_ratio = 3, distance_ratio = 0.05;
+  double size = 0, facet_ratio = 4, distance_ratio = 0.05;
   std::size_t target_tets = 0;
   po::options_description visible("Options");
   visible.add_options()
@@ -92,7 +92,7 @@ int tetrahedralize_command(const std::vector<std::string>& args)
     ("size", po::value<double>(&size)->value_name("S"),
      "the tetrahedra's size bound as a fraction of the bounding box's diagonal (instead of --tets)")
     ("facet-ratio", po::value<double>(&facet_ratio)->value_name("F"),
-     "the border triangles' size bound over the tetrahedra's, in [1, 10] (default 3)")
+     "the border triangles' size bound over the tetrahedra's, in [1, 10] (default 4)")
     ("distance-ratio", po::value<double>(&distance_ratio)->value_name("D"),
      "the border triangles' distance bound to the surface over their size bound (default 0.05)")
     ("no-optimize", "skip the sliver perturbation and exudation (faster, worse tetrahedra)")
