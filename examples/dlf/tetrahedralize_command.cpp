@@ -65,7 +65,7 @@ const char* tetrahedralize_help =
   "Usage: dlf tetrahedralize SURFACE -o OUT.mesh [--tets N | --size S] [options]\n"
   "\n"
   "Meshes the solid bounded by a closed genus-0 triangle surface with\n"
-  "tetrahedra (CGAL's Mesh_3, deterministic seed) and writes Medit .mesh:\n"
+  "tetrahedra (CGAL's Mesh_3, a fixed seed) and writes Medit .mesh:\n"
   "the input of 'dlf volume'. Only the vertices of the tetrahedra are written.\n"
   "The border triangles' size bound is --facet-ratio times the tetrahedra's:\n"
   "thin parts then get interior vertices, and few tetrahedra have all four\n"
