@@ -7,7 +7,8 @@
 #
 #   DLF=build/examples/dlf MESHES=build/data/meshes bash benchmark/volume.sh [TETS...]
 #
-# TETS: the --tets targets (default 20000). MESHLIST overrides the meshes.
+# TETS: the --tets targets (default 20000). MESHLIST overrides the meshes,
+# TETRAHEDRALIZE adds options to `dlf tetrahedralize` (e.g. --facet-ratio 1).
 set -u
 if [ "${DOC:-0}" = 1 ]; then
   root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -29,26 +30,34 @@ WORK=${WORK:-volume-work}
 MESHLIST=${MESHLIST:-"sphere bunny00 bear hand homer blobby bull triceratops diplodocus armadillo cactus dino tripod"}
 SIZES=${*:-20000}
 mkdir -p "$WORK"
-echo "| mesh | tets (target) | vertices | tets | border vertices | start: Tutte folds | untangle it. | status | stop | it. | D_vol | mean abs log r | max abs log r | inverted (exact) | border not star-shaped | seconds | peak MiB |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+echo "| mesh | tets (target) | vertices | tets | border vertices | tets with 4 border vertices | start: Tutte folds | untangle it. | status | stop | it. | D_vol | mean abs log r | max abs log r | inverted (exact) | border not star-shaped | seconds | peak MiB |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 for n in $SIZES; do
   for m in $MESHLIST; do
     mesh="$WORK/$m-$n.mesh"
     if [ ! -f "$mesh" ]; then
-      "$DLF" tetrahedralize "$MESHES/$m.off" -o "$mesh" --tets "$n" -q || { echo "| $m | $n | tetrahedralize failed |"; continue; }
+      "$DLF" tetrahedralize "$MESHES/$m.off" -o "$mesh" --tets "$n" ${TETRAHEDRALIZE:-} -q || { echo "| $m | $n | tetrahedralize failed |"; continue; }
     fi
     /usr/bin/time -f "%e %M" -o "$WORK/time.txt" "$DLF" volume "$mesh" -o "$WORK/$m-$n-ball.mesh" \
       --report "$WORK/$m-$n.json" -q 2> "$WORK/$m-$n.err"
     read -r secs kb < <(tail -1 "$WORK/time.txt")
     if [ ! -s "$WORK/$m-$n.json" ]; then
-      echo "| $m | $n | error: $(tail -1 "$WORK/$m-$n.err" | cut -c1-160) | | | | | | | | | | | | | $secs | $((kb / 1024)) |"
+      echo "| $m | $n | error: $(tail -1 "$WORK/$m-$n.err" | cut -c1-160) | | | | | | | | | | | | | | $secs | $((kb / 1024)) |"
       continue
     fi
-    /usr/bin/python3 - "$WORK/$m-$n.json" "$m" "$n" "$secs" "$kb" <<'PY'
-import json, sys
+    /usr/bin/python3 - "$WORK/$m-$n.json" "$m" "$n" "$secs" "$kb" "$mesh" <<'PY'
+import collections, json, sys
 r = json.load(open(sys.argv[1])); s = r["start"]; f = r["final"]
-print("| %s | %s | %d | %d | %d | %d | %d | %s | %s | %d | %.4f | %.3f | %.2f | %d | %d | %s | %d |" % (
-  sys.argv[2], sys.argv[3], r["vertices"], r["tets"], r["border_vertices"], s["tutte_negative_tets"] + s["tutte_flat_tets"],
+# The tets whose four corners lie on the border (a border vertex: one of a
+# triangle that only one tet has), from the Medit file.
+words = open(sys.argv[6]).read().split()
+k = words.index("Tetrahedra"); n = int(words[k + 1])
+tets = [tuple(words[k + 2 + 5 * i:k + 6 + 5 * i]) for i in range(n)]
+faces = collections.Counter(tuple(sorted(t[:j] + t[j + 1:])) for t in tets for j in range(4))
+border = {v for fc, c in faces.items() if c == 1 for v in fc}
+four = sum(all(v in border for v in t) for t in tets)
+print("| %s | %s | %d | %d | %d | %d | %d | %d | %s | %s | %d | %.4f | %.3f | %.2f | %d | %d | %s | %d |" % (
+  sys.argv[2], sys.argv[3], r["vertices"], r["tets"], r["border_vertices"], four, s["tutte_negative_tets"] + s["tutte_flat_tets"],
   s["untangle_iterations"], r["status"], r["stop_reason"], r["iterations"], f["d_vol"], f["log_volume_mean_abs"],
   f["log_volume_max_abs"], f["inverted_tets"], f["border_faces_not_star_shaped"], sys.argv[4], int(sys.argv[5]) // 1024))
 PY

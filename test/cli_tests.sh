@@ -758,7 +758,7 @@ if [ "${DLF_TETRAHEDRALIZE:-1}" = 0 ]; then
     "$? $(grep -c 'built without CGAL.s Mesh_3' vol_tet.err) $(ls vol_sphere.mesh 2> /dev/null | wc -l)" "2 1 0"
   cp "$TEST_DATA/sphere_tets.mesh" vol_sphere.mesh
 else
-  "$DLF" tetrahedralize "$MESHES/sphere.off" -o vol_sphere.mesh --tets 3000 -q
+  "$DLF" tetrahedralize "$MESHES/sphere.off" -o vol_sphere.mesh --tets 6000 -q
   check "tetrahedralize sphere.off: exit 0" equals "$?" 0
   check "tetrahedralize: a Tetrahedra section" grep -q '^Tetrahedra' vol_sphere.mesh
 fi
@@ -808,6 +808,33 @@ check "volume: a parse error names the line (exit 1)" equals "$? $(grep -c 'line
 if [ "${DLF_TETRAHEDRALIZE:-1}" != 0 ]; then
   "$DLF" tetrahedralize "$MESHES/elk.off" -o vol_torus.mesh 2> vol_torus.err
   check "tetrahedralize: a surface of genus 1 is refused (exit 1)" equals "$? $(grep -c 'Euler characteristic 0' vol_torus.err)" "1 1"
+  "$DLF" tetrahedralize "$MESHES/sphere.off" -o vol_ratio.mesh --facet-ratio 0.5 2> vol_ratio.err
+  check "tetrahedralize --facet-ratio 0.5: refused (exit 1), named, nothing written" equals \
+    "$? $(grep -c 'facet-ratio must lie in' vol_ratio.err) $(ls vol_ratio.mesh 2> /dev/null | wc -l)" "1 1 0"
+  check "tetrahedralize --tets 6000: between 3000 and 12000 tetrahedra" /usr/bin/python3 - vol_sphere.mesh <<'PY'
+import sys
+w = open(sys.argv[1]).read().split()
+sys.exit(0 if 3000 <= int(w[w.index("Tetrahedra") + 1]) <= 12000 else 1)
+PY
+  # A shape with thin legs: border triangles 3 times the tetrahedra's size
+  # (the default) leave far fewer vertices on the border than Mesh_3's
+  # uniform sizing (--facet-ratio 1), and those bound how low D_vol gets.
+  "$DLF" tetrahedralize "$MESHES/tripod.off" -o vol_tripod.mesh --tets 3000 -q
+  "$DLF" tetrahedralize "$MESHES/tripod.off" -o vol_tripod_uniform.mesh --tets 3000 --facet-ratio 1 -q
+  check "tetrahedralize tripod: the default's border vertices a smaller fraction than --facet-ratio 1's, by 0.1 at least" \
+    /usr/bin/python3 - vol_tripod.mesh vol_tripod_uniform.mesh <<'PY'
+import collections, sys
+def border_fraction(path):
+    w = open(path).read().split()
+    k = w.index("Tetrahedra"); n = int(w[k + 1])
+    tets = [w[k + 2 + 5 * i:k + 6 + 5 * i] for i in range(n)]
+    faces = collections.Counter(tuple(sorted(t[:j] + t[j + 1:])) for t in tets for j in range(4))
+    border = {v for f, c in faces.items() if c == 1 for v in f}
+    return len(border) / len({v for t in tets for v in t})
+a, b = border_fraction(sys.argv[1]), border_fraction(sys.argv[2])
+print(a, b)
+sys.exit(0 if a < b - 0.1 else 1)
+PY
 fi
 check "no temporaries left (volume)" no_temporaries
 

@@ -475,3 +475,95 @@ TEST(Volume, UntanglingOfAGradedMeshConvergesQuickly)
   EXPECT_EQ(D::count_bad_tets(y, m.tets).not_positive(), 0u);
   EXPECT_EQ(D::count_bad_border_faces(y, topo.border_faces), 0u);
 }
+
+TEST(Volume, FlowOnTheSharedDriverRecordsStopsAndResumes)
+{
+  // The flow runs as a policy of run_flow(): every iteration reaches the
+  // history and the callback with its D_vol and conjugate-gradient steps,
+  // the callback can stop it, the cap holds, and a stopped run resumed from
+  // its positions converges.
+  const Tet_mesh m = full_grid(5, 0.2);
+  SMP::Discrete_lie_flow_volume_options options;
+  options.max_iterations = 0; // the certified start alone
+  SMP::Discrete_lie_flow_volume_parameterizer_3<> start(options);
+  std::vector<Point> p;
+  ASSERT_EQ(start.parameterize(m.points, m.tets, p), SMP::OK) << start.report().message;
+  EXPECT_EQ(start.report().iterations, 0u);
+  EXPECT_EQ(start.report().stop_reason, SMP::Discrete_lie_flow_stop_reason::ITERATION_CAP);
+  std::vector<D::Vec3> xyz, x;
+  for(const Point& q : m.points) xyz.push_back({{ q.x(), q.y(), q.z() }});
+  for(const Point& q : p) x.push_back({{ q.x(), q.y(), q.z() }});
+  D::Ball_topology topo;
+  std::string message;
+  ASSERT_EQ(D::check_ball(xyz, m.tets, topo, message), SMP::OK) << message;
+  std::vector<double> target;
+  for(const auto& k : m.tets)
+    target.push_back(D::tet_det(xyz[std::size_t(k[0])], xyz[std::size_t(k[1])], xyz[std::size_t(k[2])], xyz[std::size_t(k[3])]));
+  D::Volume_energy energy(target);
+  std::vector<double> u;
+  D::tet_dets(x, m.tets, u);
+  const double E0 = energy.value(u, 0);
+  ASSERT_GT(E0 - 2, 0.01);
+
+  D::Volume_flow_settings S;
+  S.star_shaped_border = false;
+  std::vector<D::Volume_iteration> seen, history;
+  S.callback = [&](const D::Volume_iteration& I) { seen.push_back(I); return seen.size() < 2; };
+  D::Volume_flow_outcome out = D::run_volume_flow(x, m.tets, topo.on_border, topo.border_faces, target, S, &history);
+  EXPECT_EQ(out.stop_reason, SMP::Discrete_lie_flow_stop_reason::INTERRUPTED);
+  EXPECT_EQ(out.iterations, 2u);
+  ASSERT_EQ(history.size(), 2u);
+  ASSERT_EQ(seen.size(), 2u);
+  std::size_t cg = 0;
+  double previous = E0;
+  for(std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(history[i].iteration, i + 1);
+    EXPECT_EQ(history[i].d_vol, seen[i].d_vol);
+    EXPECT_LT(history[i].d_vol, previous);
+    EXPECT_GT(history[i].cg_iterations, 0u);
+    EXPECT_GT(history[i].step, 0.);
+    previous = history[i].d_vol;
+    cg += history[i].cg_iterations;
+  }
+  EXPECT_EQ(out.cg_iterations, cg);
+  D::tet_dets(x, m.tets, u);
+  EXPECT_EQ(out.energy, energy.value(u, 0)); // the positions returned are the last recorded
+  EXPECT_EQ(out.energy, history.back().d_vol);
+  EXPECT_EQ(D::count_bad_tets(x, m.tets).not_positive(), 0u);
+
+  S.callback = nullptr;
+  S.max_iterations = 1;
+  out = D::run_volume_flow(x, m.tets, topo.on_border, topo.border_faces, target, S);
+  EXPECT_EQ(out.stop_reason, SMP::Discrete_lie_flow_stop_reason::ITERATION_CAP);
+  EXPECT_EQ(out.iterations, 1u);
+  EXPECT_LT(out.energy, previous);
+
+  S.max_iterations = 1000;
+  out = D::run_volume_flow(x, m.tets, topo.on_border, topo.border_faces, target, S);
+  EXPECT_EQ(out.stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED);
+  D::tet_dets(x, m.tets, u);
+  EXPECT_LE(energy.value(u, 0) - 2, S.tolerance);
+  EXPECT_EQ(D::count_bad_tets(x, m.tets).not_positive(), 0u);
+}
+
+TEST(Volume, PlateauNeedsTheWholeWindowOfSmallRelativeProgress)
+{
+  // (E_prev − E)/(E − 2) below the plateau value for `plateau_window`
+  // iterations in a row, counted afresh after any larger gain.
+  D::Volume_flow_settings S;
+  S.plateau = 1e-4;
+  S.plateau_window = 3;
+  D::Volume_stopping stop(S);
+  typedef SMP::Discrete_lie_flow_stop_reason R;
+  D::Flow_step step;
+  stop.restart(2.1);
+  double E = 2.1;
+  auto small = [&] { E -= 0.5e-4 * (E - 2); return stop.after(step, E); };
+  EXPECT_EQ(small(), R::ITERATION_CAP);
+  EXPECT_EQ(small(), R::ITERATION_CAP);
+  E -= 1e-3; // a real gain resets the count
+  EXPECT_EQ(stop.after(step, E), R::ITERATION_CAP);
+  EXPECT_EQ(small(), R::ITERATION_CAP);
+  EXPECT_EQ(small(), R::ITERATION_CAP);
+  EXPECT_EQ(small(), R::PLATEAU);
+}

@@ -127,7 +127,7 @@ int volume_command(const std::vector<std::string>& args)
     ("share-tolerance", po::value<double>(&options.share_tolerance),
      "... and, with a density, the tetrahedra of every density value within this of their share, relative "
      "(default 0.005; 0: no such test)")
-    ("max-iterations", po::value<std::size_t>(&options.max_iterations), "iteration cap (default 300)")
+    ("max-iterations", po::value<std::size_t>(&options.max_iterations), "iteration cap (default 1000)")
     ("mu", po::value<double>(&options.mu), "fraction of the critical step, in (0, 1) (default 0.8)")
     ("cg-iterations", po::value<std::size_t>(&options.cg_max_iterations),
      "conjugate-gradient cap of each Gauss-Newton solve (default 60)")
@@ -230,9 +230,9 @@ int volume_command(const std::vector<std::string>& args)
     options.callback = [in_place, verbose](const D::Volume_iteration& I) {
       if(!in_place && !verbose && I.iteration % 10 != 0) return true;
       std::printf("%s%s %4zu  step %.3g  %s %.6g  cg %zu  %.1f s%s", in_place ? "\r" : "",
-                  I.epsilon > 0 ? "untangle" : "flow", I.iteration, I.step, I.epsilon > 0 ? "energy" : "d_vol", I.d_vol,
+                  I.untangling ? "untangle" : "flow", I.iteration, I.step, I.untangling ? "energy" : "d_vol", I.d_vol,
                   I.cg_iterations, I.seconds, in_place ? "   " : "\n");
-      if(I.epsilon > 0 && !in_place) std::printf("    eps %.3g, %zu negative tets\n", I.epsilon, I.negative_tets);
+      if(I.untangling && !in_place) std::printf("    eps %.3g, %zu negative tets\n", I.epsilon, I.negative_tets);
       std::fflush(stdout);
       return true;
     };

@@ -32,7 +32,9 @@ namespace Surface_mesh_parameterization {
 struct Discrete_lie_flow_volume_options
 {
   double tolerance = 0.01;          ///< stop when D_vol − 2 ≤ tolerance
-  std::size_t max_iterations = 300; ///< iteration cap of the flow
+  /// Iteration cap of the flow (the plateau rule ends a flow that no longer
+  /// gains well before it; doc/volume.md).
+  std::size_t max_iterations = 1000;
   double mu = 0.8;                  ///< fraction of the critical step, in (0, 1)
   std::size_t cg_max_iterations = 60; ///< conjugate-gradient cap of each Gauss–Newton solve
   /// The conjugate gradients' preconditioner: 0 (the default) the 3 × 3

@@ -14,6 +14,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/critical_step.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow_driver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_mesh.h>
 
 #include <Eigen/Dense>
@@ -63,6 +64,7 @@ struct Volume_iteration
   double critical_step = 0;  ///< the smallest critical step of the direction
   double d_vol = 0;          ///< D_vol after the step (with ε > 0: the regularised energy)
   double epsilon = 0;        ///< the untangling's ε, 0 in the certified flow
+  bool untangling = false;   ///< an iteration of the start's untangling (its polish at ε = 0 too)
   std::size_t negative_tets = 0; ///< by the doubles, after the step (untangling)
   std::size_t cg_iterations = 0;
   double seconds = 0;        ///< since the flow started
@@ -72,7 +74,7 @@ struct Volume_iteration
 struct Volume_flow_settings
 {
   double tolerance = 0.01;         ///< stop when D_vol − 2 ≤ tolerance
-  std::size_t max_iterations = 300;
+  std::size_t max_iterations = 1000;
   double mu = 0.8;                 ///< fraction of the critical step
   std::size_t cg_max_iterations = 200;
   double cg_tolerance = 1e-3;      ///< relative residual of the inexact Gauss–Newton solve
@@ -333,11 +335,299 @@ inline void tet_dets(const std::vector<Vec3>& x, const std::vector<Tet>& tets, s
   }
 }
 
+/// The volumetric flow's stop test on the plateau: the relative progress
+/// (E_prev − E)/(E − 2) below `plateau` for `plateau_window` iterations in
+/// a row (the surface flows' `Flow_stopping` compares over a window instead).
+class Volume_stopping
+{
+public:
+  explicit Volume_stopping(const Volume_flow_settings& S) : m_plateau(S.plateau), m_window(S.plateau_window) {}
+  void restart(double E) { m_E = E; m_flat = 0; }
+  Discrete_lie_flow_stop_reason after(const Flow_step&, double E)
+  {
+    const double progress = (m_E - E) / (std::max)(E - 2, 1e-300);
+    m_E = E;
+    m_flat = progress < m_plateau ? m_flat + 1 : 0;
+    return m_flat >= m_window ? Discrete_lie_flow_stop_reason::PLATEAU : Discrete_lie_flow_stop_reason::ITERATION_CAP;
+  }
+
+private:
+  double m_plateau;
+  std::size_t m_window;
+  double m_E = 0;
+  std::size_t m_flat = 0;
+};
+
+/// The certified volumetric flow as a policy of `run_flow()` (flow_driver.h;
+/// doc/design.md, "The flow driver"). `x` (every tet positive by the exact
+/// predicate, border points on the unit sphere) is moved in place.
+class Volume_certified_flow
+{
+public:
+  Volume_certified_flow(std::vector<Vec3>& x, const std::vector<Tet>& tets, const std::vector<char>& on_border,
+                        const std::vector<std::array<int, 3> >& border_faces, const std::vector<double>& target,
+                        const Volume_flow_settings& S)
+    : m_x(x), m_tets(tets), m_on_border(on_border), m_border_faces(border_faces), m_S(S), m_energy(target),
+      m_dofs(on_border, false), m_stopping(S), m_grad(tets.size()), m_gv(x.size()), m_x_trial(x.size()), m_M(x.size())
+  {}
+
+  Volume_stopping& stopping() { return m_stopping; }
+  bool on_plateau() { return true; }
+  double progress() const { return m_E; }
+  double d_area() const { return m_E; }  // the record's value: D_vol
+  double residual() const { return 0; }  // not part of the volumetric record
+  double energy() const { return m_E; }
+  std::size_t cg_iterations() const { return m_cg_total; }
+  std::size_t last_cg_iterations() const { return m_cg; }
+
+  bool start(Flow_outcome&)
+  {
+    tet_dets(m_x, m_tets, m_u);
+    m_E = m_energy.value(m_u, 0);
+    m_stopping.restart(m_E);
+    return std::isfinite(m_E);
+  }
+
+  bool converged() const
+  {
+    return m_E - 2 <= m_S.tolerance && level_share_error(m_S.level, m_S.level_share, m_u) <= m_S.share_tolerance;
+  }
+
+  /// The gradient and the Gauss–Newton blocks, then the inexact solve.
+  Direction_status direction(Flow_outcome& out)
+  {
+    {
+      Scoped_timer timer(out.seconds_assembly);
+      assemble();
+    }
+    Scoped_timer timer(out.seconds_solve);
+    solve();
+    return Direction_status::DESCENT;
+  }
+
+  /// Step bound: the critical cubic of every tet (and with a star-shaped
+  /// border of every border triangle seen from the centre), and no vertex
+  /// moving by more than a tenth of the ball's radius.
+  void bound(Flow_step& step)
+  {
+    double crit = infinite_step();
+    int limiting = -1;
+    for(std::size_t t = 0; t < m_tets.size(); ++t) {
+      const Tet& k = m_tets[t];
+      const std::size_t a = std::size_t(k[0]), b = std::size_t(k[1]), c = std::size_t(k[2]), e = std::size_t(k[3]);
+      const double r = critical_step_tet(m_x[a], m_x[b], m_x[c], m_x[e], m_d[a], m_d[b], m_d[c], m_d[e]);
+      if(r < crit) { crit = r; limiting = int(t); }
+    }
+    // Re-normalising the points scales them by positive factors: the sign
+    // of det[a, b, c] is kept.
+    if(m_S.star_shaped_border)
+      for(const auto& f : m_border_faces) {
+        const std::size_t a = std::size_t(f[0]), b = std::size_t(f[1]), c = std::size_t(f[2]);
+        crit = (std::min)(crit, critical_step_sphere(m_x[a], m_x[b], m_x[c], m_d[a], m_d[b], m_d[c]));
+      }
+    double dmax = 0;
+    for(const Vec3& e : m_d) dmax = (std::max)(dmax, norm3(e));
+    step.critical = crit;
+    step.limiting = limiting;
+    step.lambda = (std::min)((std::min)(1., m_S.mu * crit), dmax > 0 ? 0.1 / dmax : 1.);
+  }
+
+  /// Halves the step until the energy drops and the exact predicate finds
+  /// every tet positive; when no step is accepted, the direction is solved
+  /// again with 10 times the damping (more gradient-like), up to 1e6.
+  void search(Flow_step& step, Flow_outcome& out)
+  {
+    for(;;) {
+      for(step.halvings = 0; step.halvings < 40 && step.lambda > 0; ++step.halvings, step.lambda *= 0.5) {
+        for(std::size_t v = 0; v < m_x.size(); ++v) {
+          const Vec3 y = {{ m_x[v][0] + step.lambda * m_d[v][0], m_x[v][1] + step.lambda * m_d[v][1],
+                            m_x[v][2] + step.lambda * m_d[v][2] }};
+          m_x_trial[v] = m_on_border[v] ? normalized(y) : y;
+        }
+        tet_dets(m_x_trial, m_tets, m_u_trial);
+        m_E_trial = m_energy.value(m_u_trial, 0);
+        if(!(m_E_trial < m_E)) continue;
+        if(count_bad_tets(m_x_trial, m_tets).not_positive() != 0 ||
+           (m_S.star_shaped_border && count_bad_border_faces(m_x_trial, m_border_faces) != 0)) {
+          ++out.rejected_by_exact_check;
+          continue;
+        }
+        step.accepted = true;
+        return;
+      }
+      if(!(m_lambda < 1e6)) return; // stalled
+      m_lambda *= 10;
+      ++m_pass;
+      solve();
+      bound(step);
+    }
+  }
+
+  /// A short step: the quadratic model is poor there; lean towards the
+  /// (preconditioned) gradient.
+  void commit(const Flow_step& step, Flow_outcome&)
+  {
+    m_lambda = step.lambda >= 1 ? (std::max)(m_lambda / 3, 1e-8) : (std::min)(m_lambda * (step.lambda < 0.1 ? 10 : 2), 1e6);
+    m_x.swap(m_x_trial);
+    m_u.swap(m_u_trial);
+    m_E = m_E_trial;
+    ++m_pass;
+  }
+
+  void finish(Flow_outcome&) {}
+
+private:
+  void assemble()
+  {
+    m_dofs.update_frames(m_x);
+    m_energy.derivatives(m_u, 0, m_dE, m_w);
+    std::fill(m_gv.begin(), m_gv.end(), Vec3{{ 0, 0, 0 }});
+    std::fill(m_M.begin(), m_M.end(), std::array<double, 6>{{ 0, 0, 0, 0, 0, 0 }});
+    for(std::size_t t = 0; t < m_tets.size(); ++t) {
+      const Tet& k = m_tets[t];
+      const Vec3& a = m_x[std::size_t(k[0])];
+      const Vec3 e1 = sub(m_x[std::size_t(k[1])], a), e2 = sub(m_x[std::size_t(k[2])], a), e3 = sub(m_x[std::size_t(k[3])], a);
+      std::array<Vec3, 4>& G = m_grad[t]; // ∂(6u)/∂x_k
+      G[1] = cross(e2, e3);
+      G[2] = cross(e3, e1);
+      G[3] = cross(e1, e2);
+      for(int c = 0; c < 3; ++c) G[0][std::size_t(c)] = -(G[1][std::size_t(c)] + G[2][std::size_t(c)] + G[3][std::size_t(c)]);
+      for(int j = 0; j < 4; ++j) {
+        const Vec3& h = G[std::size_t(j)];
+        Vec3& acc = m_gv[std::size_t(k[std::size_t(j)])];
+        std::array<double, 6>& m = m_M[std::size_t(k[std::size_t(j)])];
+        const double w = m_w[t];
+        for(int c = 0; c < 3; ++c) acc[std::size_t(c)] += m_dE[t] * h[std::size_t(c)];
+        m[0] += w * h[0] * h[0]; m[1] += w * h[1] * h[1]; m[2] += w * h[2] * h[2];
+        m[3] += w * h[0] * h[1]; m[4] += w * h[0] * h[2]; m[5] += w * h[1] * h[2];
+      }
+    }
+    m_dofs.restrict(m_gv, m_g);
+  }
+
+  /// H s = Σ_t w_t G_t (G_t · s) + λ·diag (matrix-free).
+  void apply(const Eigen::VectorXd& in, Eigen::VectorXd& y)
+  {
+    m_dofs.expand(in, m_d);
+    m_hv.assign(m_x.size(), Vec3{{ 0, 0, 0 }});
+    for(std::size_t t = 0; t < m_tets.size(); ++t) {
+      const Tet& k = m_tets[t];
+      const std::array<Vec3, 4>& G = m_grad[t];
+      double y_t = 0;
+      for(int j = 0; j < 4; ++j) y_t += dot(G[std::size_t(j)], m_d[std::size_t(k[std::size_t(j)])]);
+      y_t *= m_w[t];
+      for(int j = 0; j < 4; ++j) {
+        Vec3& o = m_hv[std::size_t(k[std::size_t(j)])];
+        const Vec3& h = G[std::size_t(j)];
+        o[0] += y_t * h[0]; o[1] += y_t * h[1]; o[2] += y_t * h[2];
+      }
+    }
+    m_dofs.restrict(m_hv, y);
+    m_dofs.apply_regularization(m_M, m_lambda, in, y);
+  }
+
+  /// The Gauss–Newton matrix, lower triangle: per tet w_t (P G_a)(P G_b)ᵀ
+  /// for its corners a, b (P the vertex's dof frame), and the
+  /// regularisation of apply_regularization; factorised.
+  void factorize()
+  {
+    m_triplets.clear();
+    for(std::size_t t = 0; t < m_tets.size(); ++t) {
+      const Tet& k = m_tets[t];
+      double c[4][3];
+      int m[4], o[4];
+      for(int j = 0; j < 4; ++j) {
+        m[j] = m_dofs.components(std::size_t(k[std::size_t(j)]), m_grad[t][std::size_t(j)], c[j]);
+        o[j] = m_dofs.offset(std::size_t(k[std::size_t(j)]));
+      }
+      for(int a = 0; a < 4; ++a)
+        for(int b = 0; b < 4; ++b)
+          for(int i = 0; i < m[a]; ++i)
+            for(int l = 0; l < m[b]; ++l)
+              if(o[a] + i >= o[b] + l) m_triplets.emplace_back(o[a] + i, o[b] + l, m_w[t] * c[a][i] * c[b][l]);
+    }
+    for(std::size_t v = 0; v < m_x.size(); ++v) {
+      double c[3];
+      const int m = m_dofs.components(v, Vec3{{ 0, 0, 0 }}, c);
+      const double reg = m_lambda * (m_M[v][0] + m_M[v][1] + m_M[v][2]) / 3;
+      for(int i = 0; i < m; ++i) m_triplets.emplace_back(m_dofs.offset(v) + i, m_dofs.offset(v) + i, reg);
+    }
+    const int n = m_dofs.size();
+    m_H.resize(n, n);
+    m_H.setFromTriplets(m_triplets.begin(), m_triplets.end());
+    if(!m_analyzed) { m_factor.analyzePattern(m_H); m_analyzed = true; }
+    m_factor.factorize(m_H);
+    m_factored = m_factor.info() == Eigen::Success;
+    m_factor_pass = m_pass;
+  }
+
+  /// Preconditioned conjugate gradients from 0 on the damped Gauss–Newton
+  /// system; the direction m_d per vertex.
+  void solve()
+  {
+    m_dofs.block_inverse(m_M, m_lambda, m_Minv);
+    if(m_S.cholesky_every > 0 && (m_pass - m_factor_pass >= m_S.cholesky_every || !m_factored)) factorize();
+    auto precondition = [&](const Eigen::VectorXd& in, Eigen::VectorXd& o) {
+      if(m_factored) o = m_factor.solve(in);
+      else m_dofs.apply_block(m_Minv, in, o);
+    };
+    const int n = m_dofs.size();
+    m_s = Eigen::VectorXd::Zero(n);
+    m_r = -m_g;
+    precondition(m_r, m_z);
+    m_p = m_z;
+    double rz = m_r.dot(m_z);
+    const double r0 = m_r.norm();
+    std::size_t cg = 0;
+    for(; cg < m_S.cg_max_iterations && m_r.norm() > m_S.cg_tolerance * r0; ++cg) {
+      apply(m_p, m_q);
+      const double pq = m_p.dot(m_q);
+      if(!(pq > 0)) break;
+      const double alpha = rz / pq;
+      m_s += alpha * m_p;
+      m_r -= alpha * m_q;
+      precondition(m_r, m_z);
+      const double rz_new = m_r.dot(m_z);
+      m_p = m_z + (rz_new / rz) * m_p;
+      rz = rz_new;
+    }
+    m_cg = cg;
+    m_cg_total += cg;
+    // No curvature information: the preconditioned gradient.
+    if(cg == 0 || !m_s.allFinite()) m_dofs.apply_block(m_Minv, -m_g, m_s);
+    m_dofs.expand(m_s, m_d);
+  }
+
+  std::vector<Vec3>& m_x;
+  const std::vector<Tet>& m_tets;
+  const std::vector<char>& m_on_border;
+  const std::vector<std::array<int, 3> >& m_border_faces;
+  const Volume_flow_settings& m_S;
+  Volume_energy m_energy;
+  Volume_dofs m_dofs;
+  Volume_stopping m_stopping;
+  std::vector<double> m_u, m_dE, m_w, m_u_trial;
+  std::vector<std::array<Vec3, 4> > m_grad;
+  std::vector<Vec3> m_gv, m_d, m_x_trial, m_hv;
+  std::vector<std::array<double, 6> > m_M;
+  std::vector<std::array<double, 9> > m_Minv;
+  Eigen::VectorXd m_g, m_s, m_r, m_z, m_p, m_q;
+  double m_E = 0, m_E_trial = 0;
+  double m_lambda = 1e-3; // Levenberg–Marquardt damping
+  // The Cholesky preconditioner (the pattern does not change between iterations).
+  std::vector<Eigen::Triplet<double> > m_triplets;
+  Sparse_matrix m_H;
+  Default_spd_solver m_factor;
+  bool m_analyzed = false, m_factored = false;
+  std::size_t m_pass = 0, m_factor_pass = 0; // direction solves so far, and at the last factorisation
+  std::size_t m_cg = 0, m_cg_total = 0;
+};
+
 /// Runs the flow on positions `x` (border points on the unit sphere) until
 /// D_vol − 2 ≤ tolerance (and the levels' shares within theirs), a
-/// plateau, a stall or the cap. x must be positive everywhere by the exact
-/// predicate; it stays so (and so do the border triangles seen from the
-/// centre with `S.star_shaped_border`).
+/// plateau, a stall or the cap, by `run_flow()`. x must be positive
+/// everywhere by the exact predicate; it stays so (and so do the border
+/// triangles seen from the centre with `S.star_shaped_border`).
 inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vector<Tet>& tets,
                                            const std::vector<char>& on_border,
                                            const std::vector<std::array<int, 3> >& border_faces,
@@ -345,205 +635,30 @@ inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vect
                                            const Volume_flow_settings& S,
                                            std::vector<Volume_iteration>* history = nullptr)
 {
-  typedef std::chrono::steady_clock Clock;
-  const Clock::time_point start = Clock::now();
-  const double eps = 0;
-  const std::size_t V = x.size(), T = tets.size();
-  Volume_flow_outcome out;
-  Volume_energy energy(target);
-  Volume_dofs dofs(on_border, false);
-  std::vector<double> u, dE, w, u_trial;
-  std::vector<std::array<Vec3, 4> > grad(T); // ∂(6u)/∂x_k per tet
-  std::vector<Vec3> gv(V), d, x_trial(V), hv;
-  std::vector<std::array<double, 6> > M(V);
-  std::vector<std::array<double, 9> > Minv;
-  Eigen::VectorXd g, s, r, z, p, q;
-  tet_dets(x, tets, u);
-  double E = energy.value(u, eps);
-  double lambda = 1e-3; // Levenberg–Marquardt
-  // The Cholesky preconditioner (the pattern does not change between iterations).
-  std::vector<Eigen::Triplet<double> > triplets;
-  Sparse_matrix H;
-  Default_spd_solver factor;
-  bool analyzed = false, factored = false;
-  std::size_t factor_it = 0;
-  std::size_t flat = 0;
-  for(std::size_t it = 0;; ++it) {
-    if(E - 2 <= S.tolerance && level_share_error(S.level, S.level_share, u) <= S.share_tolerance) {
-      out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED;
-      break;
-    }
-    if(it >= S.max_iterations) { out.stop_reason = Discrete_lie_flow_stop_reason::ITERATION_CAP; break; }
-    dofs.update_frames(x);
-    energy.derivatives(u, eps, dE, w);
-    // Gradient and the Gauss–Newton blocks.
-    std::fill(gv.begin(), gv.end(), Vec3{{ 0, 0, 0 }});
-    std::fill(M.begin(), M.end(), std::array<double, 6>{{ 0, 0, 0, 0, 0, 0 }});
-    for(std::size_t t = 0; t < T; ++t) {
-      const Tet& k = tets[t];
-      const Vec3& a = x[std::size_t(k[0])];
-      const Vec3 e1 = sub(x[std::size_t(k[1])], a), e2 = sub(x[std::size_t(k[2])], a), e3 = sub(x[std::size_t(k[3])], a);
-      std::array<Vec3, 4>& G = grad[t];
-      G[1] = cross(e2, e3);
-      G[2] = cross(e3, e1);
-      G[3] = cross(e1, e2);
-      for(int c = 0; c < 3; ++c) G[0][std::size_t(c)] = -(G[1][std::size_t(c)] + G[2][std::size_t(c)] + G[3][std::size_t(c)]);
-      for(int j = 0; j < 4; ++j) {
-        const Vec3& h = G[std::size_t(j)];
-        Vec3& acc = gv[std::size_t(k[std::size_t(j)])];
-        std::array<double, 6>& m = M[std::size_t(k[std::size_t(j)])];
-        for(int c = 0; c < 3; ++c) acc[std::size_t(c)] += dE[t] * h[std::size_t(c)];
-        m[0] += w[t] * h[0] * h[0]; m[1] += w[t] * h[1] * h[1]; m[2] += w[t] * h[2] * h[2];
-        m[3] += w[t] * h[0] * h[1]; m[4] += w[t] * h[0] * h[2]; m[5] += w[t] * h[1] * h[2];
-      }
-    }
-    dofs.restrict(gv, g);
-    // H s = Σ_t w_t G_t (G_t · s) + λ·diag: preconditioned conjugate gradients from 0.
-    auto apply = [&](const Eigen::VectorXd& in, Eigen::VectorXd& y) {
-      dofs.expand(in, d);
-      hv.assign(V, Vec3{{ 0, 0, 0 }});
-      for(std::size_t t = 0; t < T; ++t) {
-        const Tet& k = tets[t];
-        const std::array<Vec3, 4>& G = grad[t];
-        double y_t = 0;
-        for(int j = 0; j < 4; ++j) y_t += dot(G[std::size_t(j)], d[std::size_t(k[std::size_t(j)])]);
-        y_t *= w[t];
-        for(int j = 0; j < 4; ++j) {
-          Vec3& o = hv[std::size_t(k[std::size_t(j)])];
-          const Vec3& h = G[std::size_t(j)];
-          o[0] += y_t * h[0]; o[1] += y_t * h[1]; o[2] += y_t * h[2];
-        }
-      }
-      dofs.restrict(hv, y);
-      dofs.apply_regularization(M, lambda, in, y);
-    };
-    dofs.block_inverse(M, lambda, Minv);
-    const int n = dofs.size();
-    if(S.cholesky_every > 0 && (it - factor_it >= S.cholesky_every || !factored)) {
-      // The Gauss–Newton matrix, lower triangle: per tet w_t (P G_a)(P G_b)ᵀ
-      // for its corners a, b (P the vertex's dof frame), and the
-      // regularisation of apply_regularization.
-      triplets.clear();
-      for(std::size_t t = 0; t < T; ++t) {
-        const Tet& k = tets[t];
-        double c[4][3];
-        int m[4], o[4];
-        for(int j = 0; j < 4; ++j) {
-          m[j] = dofs.components(std::size_t(k[std::size_t(j)]), grad[t][std::size_t(j)], c[j]);
-          o[j] = dofs.offset(std::size_t(k[std::size_t(j)]));
-        }
-        for(int a = 0; a < 4; ++a)
-          for(int b = 0; b < 4; ++b)
-            for(int i = 0; i < m[a]; ++i)
-              for(int l = 0; l < m[b]; ++l)
-                if(o[a] + i >= o[b] + l) triplets.emplace_back(o[a] + i, o[b] + l, w[t] * c[a][i] * c[b][l]);
-      }
-      for(std::size_t v = 0; v < V; ++v) {
-        double c[3];
-        const int m = dofs.components(v, Vec3{{ 0, 0, 0 }}, c);
-        const double reg = lambda * (M[v][0] + M[v][1] + M[v][2]) / 3;
-        for(int i = 0; i < m; ++i) triplets.emplace_back(dofs.offset(v) + i, dofs.offset(v) + i, reg);
-      }
-      H.resize(n, n);
-      H.setFromTriplets(triplets.begin(), triplets.end());
-      if(!analyzed) { factor.analyzePattern(H); analyzed = true; }
-      factor.factorize(H);
-      factored = factor.info() == Eigen::Success;
-      factor_it = it;
-    }
-    auto precondition = [&](const Eigen::VectorXd& in, Eigen::VectorXd& o) {
-      if(factored) o = factor.solve(in);
-      else dofs.apply_block(Minv, in, o);
-    };
-    s = Eigen::VectorXd::Zero(n);
-    r = -g;
-    precondition(r, z);
-    p = z;
-    double rz = r.dot(z);
-    const double r0 = r.norm();
-    std::size_t cg = 0;
-    for(; cg < S.cg_max_iterations && r.norm() > S.cg_tolerance * r0; ++cg) {
-      apply(p, q);
-      const double pq = p.dot(q);
-      if(!(pq > 0)) break;
-      const double alpha = rz / pq;
-      s += alpha * p;
-      r -= alpha * q;
-      precondition(r, z);
-      const double rz_new = r.dot(z);
-      p = z + (rz_new / rz) * p;
-      rz = rz_new;
-    }
-    out.cg_iterations += cg;
-    if(cg == 0 || !s.allFinite()) {
-      // No curvature information: the preconditioned gradient.
-      dofs.apply_block(Minv, -g, s);
-    }
-    dofs.expand(s, d);
-    // Step bound: the critical cubic of every tet (the certified flow).
-    double crit = infinite_step();
-    for(std::size_t t = 0; t < T; ++t) {
-      const Tet& k = tets[t];
-      const std::size_t a = std::size_t(k[0]), b = std::size_t(k[1]), c = std::size_t(k[2]), e = std::size_t(k[3]);
-      crit = (std::min)(crit, critical_step_tet(x[a], x[b], x[c], x[e], d[a], d[b], d[c], d[e]));
-    }
-    // The border triangles seen from the centre (re-normalising the points
-    // scales them by positive factors: the sign of det[a, b, c] is kept).
-    if(S.star_shaped_border)
-      for(const auto& f : border_faces) {
-        const std::size_t a = std::size_t(f[0]), b = std::size_t(f[1]), c = std::size_t(f[2]);
-        crit = (std::min)(crit, critical_step_sphere(x[a], x[b], x[c], d[a], d[b], d[c]));
-      }
-    // No vertex moves by more than a tenth of the ball's radius in one step.
-    double dmax = 0;
-    for(const Vec3& e : d) dmax = (std::max)(dmax, norm3(e));
-    double step = (std::min)((std::min)(1., S.mu * crit), dmax > 0 ? 0.1 / dmax : 1.);
-    bool accepted = false;
-    double E_new = E;
-    for(int tries = 0; tries < 40 && step > 0; ++tries, step *= 0.5) {
-      for(std::size_t v = 0; v < V; ++v) {
-        Vec3 y = {{ x[v][0] + step * d[v][0], x[v][1] + step * d[v][1], x[v][2] + step * d[v][2] }};
-        x_trial[v] = on_border[v] ? normalized(y) : y;
-      }
-      tet_dets(x_trial, tets, u_trial);
-      E_new = energy.value(u_trial, eps);
-      if(!(E_new < E)) continue;
-      if((count_bad_tets(x_trial, tets).not_positive() != 0 ||
-                       (S.star_shaped_border && count_bad_border_faces(x_trial, border_faces) != 0))) {
-        ++out.rejected_by_exact_check;
-        continue;
-      }
-      accepted = true;
-      break;
-    }
-    if(!accepted) {
-      if(lambda < 1e6) { lambda *= 10; continue; } // a more gradient-like direction first
-      out.stop_reason = Discrete_lie_flow_stop_reason::STALLED;
-      break;
-    }
-    // A short step: the quadratic model is poor there; lean towards the
-    // (preconditioned) gradient.
-    lambda = step >= 1 ? (std::max)(lambda / 3, 1e-8) : (std::min)(lambda * (step < 0.1 ? 10 : 2), 1e6);
-    x.swap(x_trial);
-    u.swap(u_trial);
-    const double progress = (E - E_new) / (std::max)(E_new - 2, 1e-300);
-    ++out.iterations;
-    E = E_new;
-    if(history || S.callback) {
+  Volume_certified_flow flow(x, tets, on_border, border_faces, target, S);
+  Discrete_lie_flow_options opt;
+  opt.max_iterations = S.max_iterations;
+  // The driver records the surface flows' iteration; the volumetric one
+  // adds the conjugate-gradient steps.
+  if(history || S.callback)
+    opt.callback = [&](const Discrete_lie_flow_iteration& info) {
       Volume_iteration I;
-      I.iteration = out.iterations;
-      I.step = step;
-      I.critical_step = crit;
-      I.d_vol = E;
-      I.cg_iterations = cg;
-      I.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      I.iteration = info.iteration;
+      I.step = info.step;
+      I.critical_step = info.critical_step;
+      I.d_vol = info.d_area;
+      I.cg_iterations = flow.last_cg_iterations();
+      I.seconds = info.seconds;
       if(history) history->push_back(I);
-      if(S.callback && !S.callback(I)) { out.stop_reason = Discrete_lie_flow_stop_reason::INTERRUPTED; break; }
-    }
-    flat = progress < S.plateau ? flat + 1 : 0;
-    if(flat >= S.plateau_window) { out.stop_reason = Discrete_lie_flow_stop_reason::PLATEAU; break; }
-  }
-  out.energy = E;
+      return !(S.callback && !S.callback(I));
+    };
+  const Flow_outcome o = run_flow(flow, opt);
+  Volume_flow_outcome out;
+  out.stop_reason = o.stop_reason;
+  out.iterations = o.iterations;
+  out.rejected_by_exact_check = o.rejected_by_exact_check;
+  out.cg_iterations = flow.cg_iterations();
+  out.energy = flow.energy();
   return out;
 }
 

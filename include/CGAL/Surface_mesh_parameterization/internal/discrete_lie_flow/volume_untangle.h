@@ -302,6 +302,7 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
         I.step = step;
         I.d_vol = E;
         I.epsilon = eps;
+        I.untangling = true;
         I.negative_tets = negative;
         I.seconds = std::chrono::duration<double>(Clock::now() - start).count();
         if(!callback(I)) return out;
