@@ -21,6 +21,7 @@
 #include <CGAL/subdivision_method_3.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_sphere_3.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_certified_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_spherical_area.h>
 
 #include "../benchmark/irregular_meshes.h"
 
@@ -497,6 +498,64 @@ TEST(Sphere_flow, OpeningSweepsLowerTheConeDArea)
     if(!active_mark[v]) EXPECT_EQ(p[v], before[v]) << "vertex " << v << " is not in the swept set";
     EXPECT_NEAR(D::dot(p[v], p[v]), 1, 1e-12);
   }
+}
+
+// The spherical area element of the opening: the octant is π/2; the areas
+// of a positively oriented map of a closed mesh add up to 4π; a small face
+// has its cone area up to second order; a face spread over nearly a
+// hemisphere (corners just above one great circle) is close to 2π while its
+// cone area is close to 0; the sign is the determinant's; and the gradient
+// is that of central differences.
+TEST(Sphere_flow, SphericalAreaElement)
+{
+  const double pi = 3.14159265358979323846;
+  EXPECT_NEAR(D::spherical_area_sphere({{ 1, 0, 0 }}, {{ 0, 1, 0 }}, {{ 0, 0, 1 }}), pi / 2, 1e-15);
+  EXPECT_NEAR(D::spherical_area_sphere({{ 1, 0, 0 }}, {{ 0, 0, 1 }}, {{ 0, 1, 0 }}), -pi / 2, 1e-15);
+
+  const Index_mesh m = index_mesh(read_sphere_mesh("sphere966"));
+  std::vector<V3> p;
+  for(const V3& q : m.xyz) p.push_back(D::normalized(q));
+  ASSERT_EQ(exact_sphere_signs(p, m.faces).pos, m.faces.size());
+  std::vector<double> sph, cone;
+  D::spherical_areas_sphere(p, m.faces, sph);
+  D::cone_areas_sphere(p, m.faces, cone);
+  long double total = 0;
+  for(std::size_t t = 0; t < sph.size(); ++t) {
+    total += sph[t];
+    EXPECT_GT(sph[t], 0);
+    EXPECT_NEAR(sph[t], cone[t], 0.02 * cone[t]) << "face " << t; // edges about 0.1: second order
+  }
+  EXPECT_NEAR(double(total), 4 * pi, 1e-12);
+
+  // Three corners 1e-4 above the equator, 120° apart: nearly the northern hemisphere.
+  const double z = 1e-4, r = std::sqrt(1 - z * z);
+  const V3 a{{ r, 0, z }}, b{{ r * std::cos(2 * pi / 3), r * std::sin(2 * pi / 3), z }}, c{{ r * std::cos(4 * pi / 3), r * std::sin(4 * pi / 3), z }};
+  EXPECT_GT(D::cone_area_sphere(a, b, c), 0);
+  EXPECT_LT(D::cone_area_sphere(a, b, c), 1e-3);
+  EXPECT_NEAR(D::spherical_area_sphere(a, b, c), 2 * pi, 2e-3);
+
+  // Gradient of Σ w_t u_t against central differences on a small patch of faces.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> U(-1, 1);
+  std::vector<double> w(m.faces.size());
+  for(double& x : w) x = U(rng);
+  std::vector<V3> g;
+  D::spherical_position_gradient(p, m.faces, w, g);
+  const auto total_at = [&](const std::vector<V3>& x) {
+    std::vector<double> s;
+    D::spherical_areas_sphere(x, m.faces, s);
+    long double e = 0;
+    for(std::size_t t = 0; t < s.size(); ++t) e += w[t] * s[t];
+    return double(e);
+  };
+  for(std::size_t v : { std::size_t(0), std::size_t(17), std::size_t(400) })
+    for(std::size_t j = 0; j < 3; ++j) {
+      std::vector<V3> plus = p, minus = p;
+      const double h = 1e-6;
+      plus[v][j] += h;
+      minus[v][j] -= h;
+      EXPECT_NEAR(g[v][j], (total_at(plus) - total_at(minus)) / (2 * h), 1e-6 * (1 + std::abs(g[v][j]))) << "vertex " << v << " coordinate " << j;
+    }
 }
 
 // The weighted D_area: Σ ω (r + 1/r) computed face by face in long double,

@@ -9,7 +9,10 @@
 //   faces of a start compressed by e^30); direction: the tangential Sobolev
 //   gradient, preconditioned by the cotangent stiffness of the current
 //   spherical mesh plus a small lumped mass term (x, y, z share one
-//   factorisation), L-BFGS-corrected once D_area < 3.
+//   factorisation), L-BFGS-corrected once D_area < 3. If it stalls or would
+//   end while the flat D_area is still above 10, it goes on with the
+//   spherical areas of the triangles as its element (faces spread over
+//   nearly a hemisphere have small cone areas; sphere_spherical_area.h).
 // - Polish, once D_area < 2.05 or the opening stops paying (plateau, the
 //   flat D_area rising, or steps capped short by a few faces near
 //   inversion): energy E(flat areas) + κ E(cone areas), E the D_area with
@@ -36,6 +39,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_gauss_newton.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_problem.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_relaxation.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_spherical_area.h>
 
 #include <Eigen/Sparse>
 
@@ -131,6 +135,26 @@ struct Sphere_flow_settings
   /// "A compressed start on an irregular mesh".
   double capped_far_above = 2.5;
   double capped_far_ceiling = 0.1;
+  /// The first time the opening's local sweeps would fire, or the opening
+  /// would hand over to the polish (a plateau, a rising flat D_area, a
+  /// crawl), while the flat D_area is above `spherical_opening_above`, the
+  /// opening goes on with the spherical areas of the triangles as its
+  /// element instead of the cone areas (sphere_spherical_area.h; 0: never).
+  /// Fans of needles: bunny00 `+needles2` left its cone-area opening at
+  /// flat D_area 87 with a few faces spread over nearly a hemisphere,
+  /// corners near one great circle, whose cone areas looked right, and the
+  /// polish crawled from there (13.35 after 500 iterations; 8.53 with the
+  /// switch). Spherical areas from the start cost the data set's coarse
+  /// meshes up to 44% more iterations; no data-set row stalls or hands
+  /// over above D_area 10, so they run as before. Measurements:
+  /// doc/sphere.md, "What the polish inherited from the opening".
+  double spherical_opening_above = 10;
+  /// Once on spherical areas, the opening hands over to the polish as soon
+  /// as the flat D_area is below `spherical_polish_below`. bunny00
+  /// `+needles2`: converged in 482 iterations (D_area 2.0025) with 15; 3.3
+  /// at iteration 414 with 40; 8.53 at the 500-iteration cap without (the
+  /// spherical opening crawls at steps of 2e-5–1e-4 from D_area 20 down).
+  double spherical_polish_below = 15;
 };
 
 /// Levenberg–Marquardt update of the polish's ε after an accepted step of
@@ -288,7 +312,10 @@ public:
       m_crawling = (m_D < m_settings.crawl_below && step.lambda < m_settings.crawl_step) ? m_crawling + 1 : 0;
       m_crawling_far = (m_D < m_settings.crawl_far_below && step.lambda < m_settings.crawl_step) ? m_crawling_far + 1 : 0;
       m_after_crawl = m_rising < 3 && m_crawling < 3 && m_crawling_far >= m_settings.crawl_far_steps;
-      if(m_rising >= 3 || m_crawling >= 3 || m_crawling_far >= m_settings.crawl_far_steps) m_force_polish = true;
+      if(m_rising >= 3 || m_crawling >= 3 || m_crawling_far >= m_settings.crawl_far_steps) hand_over();
+      // Spherical areas do not see great-circle slivers (large flat areas,
+      // small spherical ones): the flat energy of the polish takes over early.
+      if(m_spherical && m_D < m_settings.spherical_polish_below) m_force_polish = true;
     }
     // In the polish the mean |log r| may still fall while E hardly moves: a
     // plateau is when neither moves.
@@ -307,7 +334,7 @@ public:
   /// A plateau of the opening ends the opening: polish from here.
   bool on_plateau()
   {
-    if(!m_polish) { m_force_polish = true; return false; }
+    if(!m_polish) { hand_over(); return false; }
     const std::size_t w = m_opt.plateau_window;
     const bool mean_moves = m_mean_history.size() > w &&
                             m_mean_history[m_mean_history.size() - 1 - w] - m_mean_history.back() > 1e-3 * m_mean_history.back();
@@ -330,12 +357,37 @@ private:
     return r;
   }
 
-  /// The phase's energy at `x`: D_area of the cone areas `a` in the opening;
-  /// the polish energy of the flat areas `a` and the cone areas `b` after.
+  /// The opening is done: polish, unless the flat D_area is still far from
+  /// 2 and the opening has not yet switched to the spherical areas
+  /// (`Sphere_flow_settings::spherical_opening_above`).
+  void hand_over()
+  {
+    if(m_spherical || !(m_settings.spherical_opening_above > 0 && m_D > m_settings.spherical_opening_above)) m_force_polish = true;
+    else use_spherical_areas();
+  }
+
+  /// The opening goes on with the spherical areas as its element.
+  void use_spherical_areas()
+  {
+    m_spherical = true;
+    m_after_crawl = false;
+    m_rising = m_crawling = m_crawling_far = 0;
+    m_best_cone_D = m_D;
+    m_limiters.clear();
+    clear_pairs();
+    m_p_prev.clear();
+    m_E = evaluate(m_p, m_u, m_w);
+    m_stopping.restart(m_E);
+  }
+
+  /// The phase's energy at `x`: D_area of the cone areas `a` in the opening
+  /// (of the spherical areas once it switched to them); the polish energy
+  /// of the flat areas `a` and the cone areas `b` after.
   double evaluate(const std::vector<Vec3>& x, std::vector<double>& a, std::vector<double>& b) const
   {
     if(!m_polish) {
-      cone_areas_sphere(x, m_P.faces, a);
+      if(m_spherical) spherical_areas_sphere(x, m_P.faces, a);
+      else cone_areas_sphere(x, m_P.faces, a);
       return m_energy.value(a);
     }
     signed_areas_sphere(x, m_P.faces, a);
@@ -353,7 +405,8 @@ private:
       polish_position_gradient(m_p, m_P.faces, m_dE, m_dE_cone, m_g);
     } else {
       m_energy.derivatives(m_u, m_dE);
-      cone_position_gradient(m_p, m_P.faces, m_dE, m_g);
+      if(m_spherical) spherical_position_gradient(m_p, m_P.faces, m_dE, m_g);
+      else cone_position_gradient(m_p, m_P.faces, m_dE, m_g);
     }
     project_to_tangent(m_p, m_g);
   }
@@ -487,6 +540,11 @@ private:
       if(m_limiters.size() > m_settings.local_sweep_memory) m_limiters.erase(m_limiters.begin());
     }
     if(!repeated || m_settings.relaxation_sweeps == 0) return;
+    if(!m_spherical && m_D > m_settings.spherical_opening_above && m_settings.spherical_opening_above > 0) {
+      // The first stall far from the targets: change the element, not the vertices.
+      use_spherical_areas();
+      return;
+    }
     if(m_around.first.size() != m_n + 1) m_around = Vertex_faces(m_n, m_P.faces);
     const std::vector<Face>& F = m_P.faces;
     std::vector<std::size_t> active(F[std::size_t(f)].begin(), F[std::size_t(f)].end());
@@ -503,10 +561,15 @@ private:
       begin = end;
     }
     signed_areas_sphere(m_p, F, m_flat);
+    // The sweeps lower the D_area of the cone areas (m_u holds them unless
+    // the opening switched to the spherical areas, which agree with them
+    // to second order on small faces).
+    if(m_spherical) cone_areas_sphere(m_p, F, m_w);
+    std::vector<double>& cone = m_spherical ? m_w : m_u;
     m_trial = m_p;
     const double mu = step_fraction(m_opt);
     for(std::size_t k = 0; k < m_settings.relaxation_sweeps; ++k) {
-      const Relaxation_outcome r = relax_sphere_vertices(F, m_around, m_cone_energy, 1, mu, active, m_p, m_flat, m_u, 0);
+      const Relaxation_outcome r = relax_sphere_vertices(F, m_around, m_cone_energy, 1, mu, active, m_p, m_flat, cone, 0);
       out.rejected_by_exact_check += r.refused_by_exact_check;
       if(r.moved == 0) break;
     }
@@ -540,6 +603,7 @@ private:
   std::vector<std::vector<Vec3> > m_pairs_s, m_pairs_y;
   std::vector<Vec3> m_g, m_d, m_trial;
   bool m_polish = false, m_force_polish = false, m_newton = false;
+  bool m_spherical = false; // the opening's element: the spherical areas, not the cone areas
   bool m_after_crawl = false; // the polish was started by crawl_far_steps short steps
   double m_best_cone_D = infinite_step();
   std::size_t m_rising = 0, m_crawling = 0, m_crawling_far = 0;
