@@ -362,8 +362,15 @@ private:
   /// (`Sphere_flow_settings::spherical_opening_above`).
   void hand_over()
   {
-    if(m_spherical || !(m_settings.spherical_opening_above > 0 && m_D > m_settings.spherical_opening_above)) m_force_polish = true;
-    else use_spherical_areas();
+    if(spherical_areas_due()) use_spherical_areas();
+    else m_force_polish = true;
+  }
+
+  /// Whether the opening, on cone areas, is still far enough from the
+  /// targets to go on with the spherical areas instead of ending.
+  bool spherical_areas_due() const
+  {
+    return !m_spherical && m_settings.spherical_opening_above > 0 && m_D > m_settings.spherical_opening_above;
   }
 
   /// The opening goes on with the spherical areas as its element.
@@ -540,7 +547,7 @@ private:
       if(m_limiters.size() > m_settings.local_sweep_memory) m_limiters.erase(m_limiters.begin());
     }
     if(!repeated || m_settings.relaxation_sweeps == 0) return;
-    if(!m_spherical && m_D > m_settings.spherical_opening_above && m_settings.spherical_opening_above > 0) {
+    if(spherical_areas_due()) {
       // The first stall far from the targets: change the element, not the vertices.
       use_spherical_areas();
       return;
