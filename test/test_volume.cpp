@@ -16,6 +16,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_medit.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_untangle.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
@@ -474,6 +475,125 @@ TEST(Volume, UntanglingOfAGradedMeshConvergesQuickly)
   EXPECT_TRUE(out.success) << out.iterations;
   EXPECT_EQ(D::count_bad_tets(y, m.tets).not_positive(), 0u);
   EXPECT_EQ(D::count_bad_border_faces(y, topo.border_faces), 0u);
+}
+
+/// The certified start of a grid (no untangling needed) with the interior
+/// vertex at grid point `c` (and, with two, at `d`) moved past one of its
+/// neighbours: a local fold.
+struct Folded_grid
+{
+  Tet_mesh m;
+  D::Ball_topology topo;
+  std::vector<D::Vec3> xyz, y;
+  std::vector<double> target;
+};
+
+/// The vertex at grid point (i, j, k) of full_grid(n) (unwarped).
+std::size_t grid_vertex(const Tet_mesh& m, int i, int j, int k)
+{
+  for(std::size_t v = 0; v < m.points.size(); ++v)
+    if(m.points[v] == Point(i, j, k)) return v;
+  ADD_FAILURE() << "no grid point " << i << " " << j << " " << k;
+  return 0;
+}
+
+void fold_at(Folded_grid& g, const std::array<int, 3>& c)
+{
+  const std::size_t v = grid_vertex(g.m, c[0], c[1], c[2]), w = grid_vertex(g.m, c[0], c[1], c[2] + 1);
+  ASSERT_FALSE(g.topo.on_border[v]);
+  const D::Vec3 p = g.y[v], q = g.y[w];
+  for(int k = 0; k < 3; ++k) g.y[std::size_t(v)][std::size_t(k)] = q[std::size_t(k)] + 0.5 * (q[std::size_t(k)] - p[std::size_t(k)]);
+}
+
+void folded_grid(Folded_grid& g, int n)
+{
+  g.m = full_grid(n);
+  for(const Point& p : g.m.points) g.xyz.push_back({{ p.x(), p.y(), p.z() }});
+  std::string message;
+  ASSERT_EQ(D::check_ball(g.xyz, g.m.tets, g.topo, message), SMP::OK) << message;
+  SMP::Discrete_lie_flow_volume_options options;
+  options.max_iterations = 0; // the certified start alone
+  SMP::Discrete_lie_flow_volume_parameterizer_3<> dlf(options);
+  std::vector<Point> x;
+  ASSERT_EQ(dlf.parameterize(g.m.points, g.m.tets, x), SMP::OK) << dlf.report().message;
+  ASSERT_EQ(dlf.report().untangle_iterations, 0u);
+  for(const Point& p : x) g.y.push_back({{ p.x(), p.y(), p.z() }});
+  for(const auto& k : g.m.tets)
+    g.target.push_back(D::tet_det(g.xyz[std::size_t(k[0])], g.xyz[std::size_t(k[1])], g.xyz[std::size_t(k[2])], g.xyz[std::size_t(k[3])]));
+}
+
+TEST(Volume, UntanglingSolvesSeparateFoldsAsSeparateRegions)
+{
+  // Two folds 10 grid steps apart: their 3-ring regions share no tet, so
+  // they are untangled as two sub-problems, each exactly as if it were the
+  // only fold (the same positions to the bit), and no vertex outside them
+  // moves. The callback's iterations run on across the regions.
+  const int n = 14;
+  const std::array<int, 3> a = {{ 2, 2, 2 }}, b = {{ 12, 12, 11 }};
+  Folded_grid both, only_a;
+  folded_grid(both, n);
+  ASSERT_FALSE(HasFatalFailure());
+  only_a = both;
+  fold_at(both, a);
+  fold_at(both, b);
+  fold_at(only_a, a);
+  ASSERT_FALSE(HasFatalFailure());
+  ASSERT_GT(D::count_bad_tets(both.y, both.m.tets).negative, 1u);
+  const std::vector<D::Vec3> folded = both.y;
+  std::vector<std::size_t> seen;
+  const auto record = [&](const D::Volume_iteration& I) { seen.push_back(I.iteration); return true; };
+  const D::Untangle_outcome out = D::untangle_volume(both.y, both.m.tets, both.topo.on_border, both.topo.border_faces,
+                                                     both.xyz, both.target, 2000, record);
+  ASSERT_TRUE(out.success);
+  EXPECT_EQ(out.regions, 2u);
+  EXPECT_EQ(D::count_bad_tets(both.y, both.m.tets).not_positive(), 0u);
+  EXPECT_EQ(D::count_bad_border_faces(both.y, both.topo.border_faces), 0u);
+  ASSERT_EQ(seen.size(), out.iterations);
+  for(std::size_t i = 0; i < seen.size(); ++i) EXPECT_EQ(seen[i], i + 1);
+  const D::Untangle_outcome out_a = D::untangle_volume(only_a.y, only_a.m.tets, only_a.topo.on_border,
+                                                       only_a.topo.border_faces, only_a.xyz, only_a.target, 2000, nullptr);
+  ASSERT_TRUE(out_a.success);
+  EXPECT_EQ(out_a.regions, 1u);
+  std::size_t moved_a = 0, moved_b = 0, still = 0;
+  for(std::size_t v = 0; v < both.m.points.size(); ++v) {
+    const int i = int(both.m.points[v].x()), j = int(both.m.points[v].y()), k = int(both.m.points[v].z());
+    const int da = (std::max)({ std::abs(i - a[0]), std::abs(j - a[1]), std::abs(k - a[2]) });
+    const int db = (std::max)({ std::abs(i - b[0]), std::abs(j - b[1]), std::abs(k - b[2]) });
+    const bool moved = both.y[v] != folded[v];
+    if(da <= 5) { // a's region: as if alone
+      EXPECT_EQ(both.y[v], only_a.y[v]) << "vertex " << v;
+      moved_a += moved;
+    } else if(db <= 5) {
+      moved_b += moved;
+    } else {
+      EXPECT_FALSE(moved) << "vertex " << v << " outside both regions moved";
+      ++still;
+    }
+  }
+  EXPECT_GT(moved_a, 10u);
+  EXPECT_GT(moved_b, 10u);
+  EXPECT_GT(still, 1000u);
+}
+
+TEST(Volume, UntanglingStopsWhenTheCallbackSaysSo)
+{
+  // false from the callback ends the untangling at once: no later region
+  // or stage runs.
+  const int n = 14;
+  Folded_grid g;
+  folded_grid(g, n);
+  ASSERT_FALSE(HasFatalFailure());
+  fold_at(g, {{ 2, 2, 2 }});
+  fold_at(g, {{ 12, 12, 11 }});
+  ASSERT_FALSE(HasFatalFailure());
+  std::size_t calls = 0;
+  const D::Untangle_outcome out = D::untangle_volume(g.y, g.m.tets, g.topo.on_border, g.topo.border_faces, g.xyz,
+                                                     g.target, 2000, [&](const D::Volume_iteration&) { ++calls; return false; });
+  EXPECT_TRUE(out.stopped);
+  EXPECT_FALSE(out.success);
+  EXPECT_EQ(out.iterations, 1u);
+  EXPECT_EQ(out.regions, 1u);
+  EXPECT_EQ(calls, 1u);
 }
 
 TEST(Volume, FlowOnTheSharedDriverRecordsStopsAndResumes)

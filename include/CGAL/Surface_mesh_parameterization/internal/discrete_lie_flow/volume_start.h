@@ -149,6 +149,12 @@ int volume_start(const std::vector<Vec3>& xyz, const std::vector<Tet>& tets, con
   info.seconds_untangle = std::chrono::duration<double>(Clock::now() - t0).count();
   const Tet_orientation_counts after = count_bad_tets(x, tets);
   const std::size_t bad_border = count_bad_border_faces(x, topo.border_faces);
+  if(out.stopped && (after.not_positive() != 0 || bad_border != 0)) {
+    message = "no certified start: the callback stopped the untangling after " + std::to_string(out.iterations) +
+              " iterations, with " + std::to_string(after.negative) + " tetrahedra inverted and " +
+              std::to_string(after.flat) + " flat (exact predicate)";
+    return ERROR_INITIAL_MAP_FOLDED;
+  }
   if(!out.success || after.not_positive() != 0 || bad_border != 0) {
     message = "no certified start: Tutte's embedding of the interior folds " + std::to_string(bad.negative) +
               " tetrahedra and flattens " + std::to_string(bad.flat) + " (exact predicate; " +
