@@ -135,7 +135,7 @@ int volume_command(const std::vector<std::string>& args)
      "precondition the conjugate gradients by a sparse Cholesky factorisation of the Gauss-Newton matrix, "
      "refreshed every K iterations (default 0: the 3x3 blocks of every vertex)")
     ("untangle-iterations", po::value<std::size_t>(&options.untangle_max_iterations)->value_name("N"),
-     "iteration cap of the start's untangling, its 4 stages together (default 12000; at most 10000 per stage)")
+     "iteration cap of the start's untangling, its stages and regions together (default 12000; at most 10000 per region of a stage)")
     ("border-start", po::value<std::string>(&border_start)->value_name("tutte|conformal"),
      "the start of the border's spherical map (default tutte)")
     ("border-max-iterations", po::value<std::size_t>(&options.border.max_iterations)->value_name("N"),

@@ -43,8 +43,8 @@ struct Discrete_lie_flow_volume_options
   /// iterations to a lower D_vol on meshes with protrusions, each several
   /// times dearer; doc/volume.md).
   std::size_t cholesky_every = 0;
-  /// Iteration cap of the start's untangling, its stages together (each
-  /// stage at most 10,000; volume_untangle.h).
+  /// Iteration cap of the start's untangling, its stages and regions
+  /// together (each region of a stage at most 10,000; volume_untangle.h).
   std::size_t untangle_max_iterations = 12000;
   /// Keep the border star-shaped during the flow: every border triangle
   /// positive seen from the centre, besides every tet positive; both
@@ -108,7 +108,7 @@ struct Discrete_lie_flow_volume_report
   bool start_certified = false; ///< every tet of the start positive by the exact predicate
   std::size_t start_negative_tets = 0; ///< negative tets of Tutte's embedding, before untangling
   std::size_t start_flat_tets = 0;     ///< flat tets of Tutte's embedding, before untangling
-  std::size_t untangle_iterations = 0; ///< iterations of the start's untangling
+  std::size_t untangle_iterations = 0; ///< iterations of the start's untangling (every region and stage)
   std::size_t rejected_by_exact_check = 0; ///< trial steps the doubles accepted and the exact predicate refused
   std::size_t cg_iterations = 0; ///< conjugate-gradient steps of the flow, in all
   std::vector<Discrete_lie_flow_volume_share> shares; ///< per density value (up to 32 values)

@@ -360,16 +360,19 @@ inline Untangle_outcome untangle_volume(std::vector<Vec3>& x, const std::vector<
                                         const std::function<bool(const Volume_iteration&)>& callback)
 {
   // Folds are local: the vertices within k rings of a fold move, the rest
-  // stay (k = 3, then 6, 12, then every vertex). The movable vertices fall
-  // into connected regions (two movable vertices of one tet are in one
-  // region), and each region is untangled on its own with its neighbours
-  // held: the regions' energies share no term, so this is the same problem,
-  // but every region gets its own steps, ε and stop. Together, one region
-  // hard to untangle held every other one at its small steps, and each of
-  // its iterations cost the whole region set (on a Tutte start of 987K
-  // tets: 461 iterations over every fold at once). Tets and cones outside
-  // every region keep their positive (exact) orientation: every fold seeds
-  // a region. The border triangles enter as cone tets (O, a, b, c) on a
+  // stay (k = 1, then 3, 6, 12, then every vertex; a stage starts where the
+  // last one left off, from the folds left). The movable vertices fall into
+  // connected regions (two movable vertices of one tet are in one region),
+  // and each region is untangled on its own with its neighbours held: the
+  // regions' energies share no term, so this is the same problem, but every
+  // region gets its own steps, ε and stop. Together, the region hardest to
+  // untangle held every other one at its small steps, and each of its
+  // iterations cost all the regions (doc/volume.md, "The certified start at
+  // 1M tetrahedra"). One ring first: at 1M tets the 3-ring regions of
+  // nearby folds merged into regions of 55K and 126K tets, the 1-ring ones
+  // stay below 24K and all untangled with their neighbours held. Tets and
+  // cones outside every region keep their positive (exact) orientation:
+  // every fold seeds a region. The border triangles enter as cone tets (O, a, b, c) on a
   // fixed vertex at the centre: their barrier keeps the border
   // star-shaped. Their reference is the start (the spherical map,
   // positive), their weight a small share.
@@ -390,7 +393,7 @@ inline Untangle_outcome untangle_volume(std::vector<Vec3>& x, const std::vector<
   const Vec3 o = {{ 0, 0, 0 }};
   std::vector<int> region(V, -1), local(V, -1);
   std::vector<char> tet_taken(T, 0), face_taken(border_faces.size(), 0);
-  for(int rings : { 3, 6, 12, -1 }) {
+  for(int rings : { 1, 3, 6, 12, -1 }) {
     if(total.iterations >= max_iterations) break;
     // The folded tets' and cones' vertices, grown by `rings` rings.
     std::vector<char> movable(V, 0);
