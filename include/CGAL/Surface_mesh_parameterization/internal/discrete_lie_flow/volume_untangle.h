@@ -372,9 +372,9 @@ inline Untangle_outcome untangle_volume(std::vector<Vec3>& x, const std::vector<
   // nearby folds merged into regions of 55K and 126K tets, the 1-ring ones
   // stay below 24K and all untangled with their neighbours held. Tets and
   // cones outside every region keep their positive (exact) orientation:
-  // every fold seeds a region. The border triangles enter as cone tets (O, a, b, c) on a
-  // fixed vertex at the centre: their barrier keeps the border
-  // star-shaped. Their reference is the start (the spherical map,
+  // every fold seeds a region. The border triangles enter as cone tets
+  // (O, a, b, c) on a fixed vertex at the centre: their barrier keeps the
+  // border star-shaped. Their reference is the start (the spherical map,
   // positive), their weight a small share.
   const std::size_t V = x.size(), T = tets.size();
   double Tsum = 0;
