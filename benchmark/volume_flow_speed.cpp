@@ -81,6 +81,7 @@ int main(int argc, char** argv)
     const std::string a = argv[i];
     if(a == "-v") verbose = true;
     else if(a == "--no-forcing") S.cg_forcing = false;
+    else if(i + 1 < argc && a == "--eta-max") S.cg_forcing_max = std::atof(argv[++i]);
     else if(i + 1 < argc && a == "--coarse") S.coarse_aggregate = std::size_t(std::atol(argv[++i]));
     else if(i + 1 < argc && a == "--threads") S.threads = std::atoi(argv[++i]);
     else if(i + 1 < argc && a == "--cg-iterations") S.cg_max_iterations = std::size_t(std::atol(argv[++i]));

@@ -95,6 +95,7 @@ struct Volume_flow_settings
   /// minimum, down to `cg_tolerance` near it) instead of staying at
   /// `cg_tolerance`.
   bool cg_forcing = true;
+  double cg_forcing_max = 0.5;     ///< the forcing term's upper bound
   /// Two-level preconditioner: besides the 3 × 3 blocks, a coarse
   /// correction on aggregates of this many consecutive vertices (in the
   /// flow's Morton order, so spatially compact), every aggregate moving by
@@ -147,10 +148,14 @@ struct Volume_flow_outcome
 class Volume_energy
 {
 public:
-  explicit Volume_energy(const std::vector<double>& target) : m_c(target.size())
+  /// `sum_order` (empty: 0, 1, ...): the order in which the sums over the
+  /// tets visit them, so that a renumbered copy of a mesh gets the very
+  /// values of the original (locality_order()).
+  explicit Volume_energy(const std::vector<double>& target, std::vector<int> sum_order = std::vector<int>())
+    : m_c(target.size()), m_order(std::move(sum_order))
   {
     double T = 0;
-    for(double a : target) T += a;
+    for(std::size_t o = 0; o < target.size(); ++o) T += target[at(o)];
     for(std::size_t t = 0; t < target.size(); ++t) m_c[t] = (target[t] / T) * (target[t] / T);
   }
   static double chi(double u, double eps) { return eps > 0 ? 0.5 * (u + std::sqrt(eps * eps + u * u)) : u; }
@@ -160,7 +165,8 @@ public:
   double value(const std::vector<double>& u, double eps) const
   {
     double U = 0, K = 0;
-    for(std::size_t t = 0; t < u.size(); ++t) {
+    for(std::size_t o = 0; o < u.size(); ++o) {
+      const std::size_t t = at(o);
       const double x = chi(u[t], eps);
       if(!(x > 0)) return std::numeric_limits<double>::infinity();
       U += u[t];
@@ -172,7 +178,7 @@ public:
   void derivatives(const std::vector<double>& u, double eps, std::vector<double>& dE, std::vector<double>& w) const
   {
     double U = 0, K = 0;
-    for(std::size_t t = 0; t < u.size(); ++t) { U += u[t]; K += m_c[t] / chi(u[t], eps); }
+    for(std::size_t o = 0; o < u.size(); ++o) { const std::size_t t = at(o); U += u[t]; K += m_c[t] / chi(u[t], eps); }
     dE.resize(u.size());
     w.resize(u.size());
     for(std::size_t t = 0; t < u.size(); ++t) {
@@ -182,7 +188,9 @@ public:
     }
   }
 private:
+  std::size_t at(std::size_t o) const { return m_order.empty() ? o : std::size_t(m_order[o]); }
   std::vector<double> m_c;
+  std::vector<int> m_order;
 };
 
 /// The degrees of freedom: an interior vertex moves in space (3), a border
@@ -394,14 +402,16 @@ private:
 
 /// The certified volumetric flow as a policy of `run_flow()` (flow_driver.h;
 /// doc/design.md, "The flow driver"). `x` (every tet positive by the exact
-/// predicate, border points on the unit sphere) is moved in place.
+/// predicate, border points on the unit sphere) is moved in place;
+/// `sum_order` orders the energy's sums (Volume_energy).
 class Volume_certified_flow
 {
 public:
   Volume_certified_flow(std::vector<Vec3>& x, const std::vector<Tet>& tets, const std::vector<char>& on_border,
                         const std::vector<std::array<int, 3> >& border_faces, const std::vector<double>& target,
-                        const Volume_flow_settings& S)
-    : m_x(x), m_tets(tets), m_on_border(on_border), m_border_faces(border_faces), m_S(S), m_energy(target),
+                        const Volume_flow_settings& S, std::vector<int> sum_order = std::vector<int>())
+    : m_x(x), m_tets(tets), m_on_border(on_border), m_border_faces(border_faces), m_S(S),
+      m_energy(target, std::move(sum_order)),
       m_dofs(on_border, false), m_stopping(S), m_grad(tets.size()), m_gv(x.size()), m_x_trial(x.size()), m_M(x.size()),
       m_threads(volume_flow_threads(S.threads, tets.size()))
   {
@@ -828,7 +838,9 @@ private:
       double eta = 0.9 * (g / m_g_prev) * (g / m_g_prev);
       const double safe = 0.9 * m_eta * m_eta;
       if(safe > 0.1) eta = (std::max)(eta, safe);
-      m_eta = (std::min)((std::max)(eta, m_S.cg_tolerance), 0.5);
+      m_eta = (std::min)((std::max)(eta, m_S.cg_tolerance), m_S.cg_forcing_max);
+    } else {
+      m_eta = (std::min)(0.5, m_S.cg_forcing_max);
     }
     m_g_prev = g;
   }
@@ -1025,7 +1037,11 @@ inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vect
     std::vector<Vec3>& x; const std::vector<Vec3>& xn; const std::vector<int>& to_new;
     ~Write_back() { for(std::size_t v = 0; v < x.size(); ++v) x[v] = xn[std::size_t(to_new[v])]; }
   } write_back{ x, xn, to_new };
-  Volume_certified_flow flow(xn, tets_n, on_border_n, faces_n, target_n, Sn);
+  // The energy's sums in the original order: D_vol the same, bit for bit, as
+  // computed on the caller's numbering.
+  std::vector<int> sum_order(tets.size());
+  for(std::size_t i = 0; i < tets.size(); ++i) sum_order[std::size_t(tet_order[i])] = int(i);
+  Volume_certified_flow flow(xn, tets_n, on_border_n, faces_n, target_n, Sn, std::move(sum_order));
   Discrete_lie_flow_options opt;
   opt.max_iterations = S.max_iterations;
   // The driver records the surface flows' iteration; the volumetric one
