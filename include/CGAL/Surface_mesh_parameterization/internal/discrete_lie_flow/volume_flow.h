@@ -16,6 +16,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow_driver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/parallel_ranges.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/solver_threads.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_mesh.h>
 
 #include <Eigen/Dense>
@@ -1011,6 +1012,11 @@ inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vect
                                            const Volume_flow_settings& S,
                                            std::vector<Volume_iteration>* history = nullptr)
 {
+  // The coarse level's factorisations (a few thousand unknowns) gain nothing
+  // from BLAS threads, whose spinning between calls takes the cores from
+  // the flow's own threads (perf: sched_yield); the whole Gauss–Newton
+  // matrix of cholesky_every keeps the automatic setting.
+  const Scoped_blas_threads blas(S.cholesky_every > 0 ? 0 : 1, x.size());
   // The flow runs on a renumbered copy (locality_order()); x is written back.
   std::vector<int> to_new, tet_order;
   locality_order(x, tets, to_new, tet_order);
