@@ -576,35 +576,36 @@ TEST(Volume, FlowGivesTheSamePointsBitForBitWhateverTheNumberOfThreads)
   D::Ball_topology topo;
   std::vector<double> target;
   volume_start(m, x0, topo, target);
-  for(std::size_t cholesky : { 0, 2 })
-    for(std::size_t coarse : { 0, 16, 64 }) {
-      D::Volume_flow_settings S;
-      S.star_shaped_border = false;
-      S.cholesky_every = cholesky;
-      S.coarse_aggregate = coarse;
-      std::vector<D::Vec3> one;
-      D::Volume_flow_outcome first;
-      for(int threads : { 1, 2, 3 }) {
-        S.threads = threads;
-        std::vector<D::Vec3> x = x0;
-        const D::Volume_flow_outcome out = D::run_volume_flow(x, m.tets, topo.on_border, topo.border_faces, target, S);
-        EXPECT_EQ(out.stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED) << threads;
-        EXPECT_EQ(D::count_bad_tets(x, m.tets).not_positive(), 0u);
-        if(threads == 1) {
-          one = x;
-          first = out;
-          EXPECT_GT(out.iterations, 2u);
-          continue;
-        }
-        EXPECT_EQ(out.iterations, first.iterations) << threads << " " << coarse << " " << cholesky;
-        EXPECT_EQ(out.cg_iterations, first.cg_iterations) << threads;
-        EXPECT_EQ(out.energy, first.energy) << threads;
-        std::size_t differ = 0;
-        for(std::size_t v = 0; v < x.size(); ++v)
-          if(x[v] != one[v]) ++differ;
-        EXPECT_EQ(differ, 0u) << threads << " threads, coarse " << coarse << ", cholesky " << cholesky;
+  const std::pair<std::size_t, std::size_t> cases[] = { { 0, 16 }, { 0, 0 }, { 2, 64 } }; // (cholesky_every, coarse)
+  for(const auto& c : cases) {
+    const std::size_t cholesky = c.first, coarse = c.second;
+    D::Volume_flow_settings S;
+    S.star_shaped_border = false;
+    S.cholesky_every = cholesky;
+    S.coarse_aggregate = coarse;
+    std::vector<D::Vec3> one;
+    D::Volume_flow_outcome first;
+    for(int threads : { 1, 2, 3 }) {
+      S.threads = threads;
+      std::vector<D::Vec3> x = x0;
+      const D::Volume_flow_outcome out = D::run_volume_flow(x, m.tets, topo.on_border, topo.border_faces, target, S);
+      EXPECT_EQ(out.stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED) << threads;
+      EXPECT_EQ(D::count_bad_tets(x, m.tets).not_positive(), 0u);
+      if(threads == 1) {
+        one = x;
+        first = out;
+        EXPECT_GT(out.iterations, 2u);
+        continue;
       }
+      EXPECT_EQ(out.iterations, first.iterations) << threads << " " << coarse << " " << cholesky;
+      EXPECT_EQ(out.cg_iterations, first.cg_iterations) << threads;
+      EXPECT_EQ(out.energy, first.energy) << threads;
+      std::size_t differ = 0;
+      for(std::size_t v = 0; v < x.size(); ++v)
+        if(x[v] != one[v]) ++differ;
+      EXPECT_EQ(differ, 0u) << threads << " threads, coarse " << coarse << ", cholesky " << cholesky;
     }
+  }
   // The automatic setting: one thread below the threshold.
   EXPECT_EQ(D::volume_flow_threads(0, D::single_flow_thread_below - 1), 1);
   EXPECT_GE(D::volume_flow_threads(0, D::single_flow_thread_below), 1);
