@@ -865,7 +865,7 @@ private:
     auto dofs = [&](std::size_t vb, std::size_t ve) {
       return std::make_pair(Eigen::Index(m_dofs.offset_or_size(vb)), Eigen::Index(m_dofs.offset_or_size(ve)));
     };
-    auto each_dof = [&](const std::function<void(Eigen::Index)>& f) {
+    auto each_dof = [&](const auto& f) {
       parallel_ranges(std::size_t(n), m_threads, [&](std::size_t b, std::size_t e, std::size_t) {
         for(std::size_t i = b; i < e; ++i) f(Eigen::Index(i));
       });
