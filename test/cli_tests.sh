@@ -798,6 +798,9 @@ check "volume --cholesky-every 1: converged, one conjugate-gradient step per ite
   "converged $(json_get vol_chol.json "" iterations)"
 "$DLF" volume vol_sphere.mesh --threads 1 -o vol_t1.mesh -q && "$DLF" volume vol_sphere.mesh --threads 2 -o vol_t2.mesh -q
 check "volume --threads 1 and --threads 2: the same points, bit for bit" cmp -s vol_t1.mesh vol_t2.mesh
+check "volume: the report names the flow's threads and preconditioner (automatic: one thread on a small mesh)" equals \
+  "$(json_get vol.json options threads) $(json_get vol.json options threads_used) $(json_get vol.json options coarse_aggregate) $(json_get vol.json options cg_forcing)" \
+  "0 1 64 true"
 "$DLF" volume vol_sphere.mesh --threads -1 2> vol_threads.err
 check "volume --threads -1: exit 1, named" equals "$? $(grep -c 'threads must be' vol_threads.err)" "1 1"
 "$DLF" volume vol_sphere.mesh --border-start foo 2> vol_border_start.err

@@ -318,7 +318,10 @@ int volume_command(const std::vector<std::string>& args)
                    { "achieved_share", roi_achieved }, { "relative_error", roi_achieved / roi_target - 1 } };
     j["options"] = { { "tolerance", options.tolerance }, { "share_tolerance", options.share_tolerance }, { "max_iterations", options.max_iterations }, { "mu", options.mu },
                        { "border_start", border_start }, { "border_max_iterations", options.border.max_iterations },
-                       { "untangle_iterations", options.untangle_max_iterations } };
+                       { "untangle_iterations", options.untangle_max_iterations },
+                       { "coarse_aggregate", options.coarse_aggregate }, { "cg_forcing", options.cg_forcing },
+                       { "threads", options.threads },
+                       { "threads_used", D::volume_flow_threads(options.threads, mesh.tets.size()) } };
     j["counters"] = { { "rejected_by_exact_check", R.rejected_by_exact_check }, { "cg_iterations", R.cg_iterations } };
     j["seconds"] = { { "border", R.seconds_border }, { "interior", R.seconds_interior }, { "untangle", R.seconds_untangle },
                      { "flow", R.seconds_flow }, { "total", R.seconds_total } };
