@@ -796,6 +796,13 @@ check "volume -v: a line per flow iteration, as many as reported" equals \
 check "volume --cholesky-every 1: converged, one conjugate-gradient step per iteration (the factorisation is the matrix solved)" \
   equals "$(json_get vol_chol.json "" stop_reason) $(json_get vol_chol.json counters cg_iterations)" \
   "converged $(json_get vol_chol.json "" iterations)"
+"$DLF" volume vol_sphere.mesh --threads 1 -o vol_t1.mesh -q && "$DLF" volume vol_sphere.mesh --threads 2 -o vol_t2.mesh -q
+check "volume --threads 1 and --threads 2: the same points, bit for bit" cmp -s vol_t1.mesh vol_t2.mesh
+check "volume: the report names the flow's threads and preconditioner (automatic: one thread on a small mesh)" equals \
+  "$(json_get vol.json options threads) $(json_get vol.json options threads_used) $(json_get vol.json options coarse_aggregate) $(json_get vol.json options cg_forcing)" \
+  "0 1 64 true"
+"$DLF" volume vol_sphere.mesh --threads -1 2> vol_threads.err
+check "volume --threads -1: exit 1, named" equals "$? $(grep -c 'threads must be' vol_threads.err)" "1 1"
 "$DLF" volume vol_sphere.mesh --border-start foo 2> vol_border_start.err
 check "volume --border-start foo: exit 1, named" equals "$? $(grep -c 'border-start takes tutte or conformal' vol_border_start.err)" "1 1"
 printf 'MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\nTetrahedra\n1\n1 2 4 3 1\nEnd\n' > vol_inverted.mesh

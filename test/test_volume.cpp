@@ -666,6 +666,141 @@ TEST(Volume, FlowOnTheSharedDriverRecordsStopsAndResumes)
   EXPECT_EQ(D::count_bad_tets(x, m.tets).not_positive(), 0u);
 }
 
+/// The certified start of `m` (the parameterizer with no flow iteration), its
+/// topology and its targets.
+void volume_start(const Tet_mesh& m, std::vector<D::Vec3>& x, D::Ball_topology& topo, std::vector<double>& target)
+{
+  SMP::Discrete_lie_flow_volume_options options;
+  options.max_iterations = 0;
+  SMP::Discrete_lie_flow_volume_parameterizer_3<> start(options);
+  std::vector<Point> p;
+  ASSERT_EQ(start.parameterize(m.points, m.tets, p), SMP::OK) << start.report().message;
+  std::vector<D::Vec3> xyz;
+  for(const Point& q : m.points) xyz.push_back({{ q.x(), q.y(), q.z() }});
+  x.clear();
+  for(const Point& q : p) x.push_back({{ q.x(), q.y(), q.z() }});
+  std::string message;
+  ASSERT_EQ(D::check_ball(xyz, m.tets, topo, message), SMP::OK) << message;
+  target.clear();
+  for(const auto& k : m.tets)
+    target.push_back(D::tet_det(xyz[std::size_t(k[0])], xyz[std::size_t(k[1])], xyz[std::size_t(k[2])], xyz[std::size_t(k[3])]));
+}
+
+TEST(Volume, FlowGivesTheSamePointsBitForBitWhateverTheNumberOfThreads)
+{
+  // The passes over tets and vertices run on threads; every sum is gathered
+  // per vertex over its tets, or per fixed block of vertices, in one order.
+  const Tet_mesh m = full_grid(6, 0.2);
+  std::vector<D::Vec3> x0;
+  D::Ball_topology topo;
+  std::vector<double> target;
+  volume_start(m, x0, topo, target);
+  const std::pair<std::size_t, std::size_t> cases[] = { { 0, 16 }, { 0, 0 }, { 2, 64 } }; // (cholesky_every, coarse)
+  for(const auto& c : cases) {
+    const std::size_t cholesky = c.first, coarse = c.second;
+    D::Volume_flow_settings S;
+    S.star_shaped_border = false;
+    S.cholesky_every = cholesky;
+    S.coarse_aggregate = coarse;
+    std::vector<D::Vec3> one;
+    D::Volume_flow_outcome first;
+    for(int threads : { 1, 2, 3 }) {
+      S.threads = threads;
+      std::vector<D::Vec3> x = x0;
+      const D::Volume_flow_outcome out = D::run_volume_flow(x, m.tets, topo.on_border, topo.border_faces, target, S);
+      EXPECT_EQ(out.stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED) << threads;
+      EXPECT_EQ(D::count_bad_tets(x, m.tets).not_positive(), 0u);
+      if(threads == 1) {
+        one = x;
+        first = out;
+        EXPECT_GT(out.iterations, 2u);
+        continue;
+      }
+      EXPECT_EQ(out.iterations, first.iterations) << threads << " " << coarse << " " << cholesky;
+      EXPECT_EQ(out.cg_iterations, first.cg_iterations) << threads;
+      EXPECT_EQ(out.energy, first.energy) << threads;
+      std::size_t differ = 0;
+      for(std::size_t v = 0; v < x.size(); ++v)
+        if(x[v] != one[v]) ++differ;
+      EXPECT_EQ(differ, 0u) << threads << " threads, coarse " << coarse << ", cholesky " << cholesky;
+    }
+  }
+  // The automatic setting: one thread below the threshold.
+  EXPECT_EQ(D::volume_flow_threads(0, D::single_flow_thread_below - 1), 1);
+  EXPECT_GE(D::volume_flow_threads(0, D::single_flow_thread_below), 1);
+  EXPECT_EQ(D::volume_flow_threads(5, 10), 5);
+}
+
+TEST(Volume, CoarseMatrixIsTheGaussNewtonMatrixOnTheAggregates)
+{
+  // The coarse level's matrix, assembled per tet from the aggregates'
+  // projected gradients and the damping, against Pᵀ H P by the flow's own
+  // matrix-free product: the frames of the border vertices, the weights and
+  // the damping each enter both.
+  const Tet_mesh m = full_grid(6, 0.2);
+  std::vector<D::Vec3> x;
+  D::Ball_topology topo;
+  std::vector<double> target;
+  volume_start(m, x, topo, target);
+  for(std::size_t k : { 1, 16, 100 }) {
+    D::Volume_flow_settings S;
+    S.star_shaped_border = false;
+    S.coarse_aggregate = k;
+    std::vector<D::Vec3> y = x;
+    D::Volume_certified_flow flow(y, m.tets, topo.on_border, topo.border_faces, target, S);
+    D::Flow_outcome out;
+    ASSERT_TRUE(flow.start(out));
+    flow.direction(out);
+    const std::size_t A = (x.size() + k - 1) / k;
+    ASSERT_EQ(flow.aggregates(), A);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> uni(-1, 1);
+    for(int trial = 0; trial < 3; ++trial) {
+      Eigen::VectorXd ec(Eigen::Index(3 * A)), by_matrix, by_products;
+      for(Eigen::Index i = 0; i < ec.size(); ++i) ec[i] = uni(rng);
+      ASSERT_TRUE(flow.coarse_products(ec, by_matrix, by_products));
+      EXPECT_LE((by_matrix - by_products).norm(), 1e-10 * by_products.norm()) << "aggregates of " << k;
+      EXPECT_GT(by_products.norm(), 0.);
+    }
+  }
+  D::Volume_flow_settings S;
+  S.coarse_aggregate = 0;
+  std::vector<D::Vec3> y = x;
+  D::Volume_certified_flow flow(y, m.tets, topo.on_border, topo.border_faces, target, S);
+  D::Flow_outcome out;
+  ASSERT_TRUE(flow.start(out));
+  flow.direction(out);
+  Eigen::VectorXd ec = Eigen::VectorXd::Ones(3), a, b;
+  EXPECT_FALSE(flow.coarse_products(ec, a, b));
+}
+
+TEST(Volume, LocalityOrderIsAPermutationAlongTheMortonCurve)
+{
+  const Tet_mesh m = full_grid(5, 0.2);
+  std::vector<D::Vec3> x;
+  for(const Point& q : m.points) x.push_back({{ q.x(), q.y(), q.z() }});
+  std::vector<int> to_new, tet_order;
+  D::locality_order(x, m.tets, to_new, tet_order);
+  std::vector<int> seen(x.size(), 0), seen_t(m.tets.size(), 0);
+  for(int v : to_new) ++seen[std::size_t(v)];
+  for(int t : tet_order) ++seen_t[std::size_t(t)];
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), std::ptrdiff_t(x.size()));
+  EXPECT_EQ(std::count(seen_t.begin(), seen_t.end(), 1), std::ptrdiff_t(m.tets.size()));
+  // The grid's first octant (coordinates below the middle) comes first.
+  std::vector<D::Vec3> by_new(x.size());
+  for(std::size_t v = 0; v < x.size(); ++v) by_new[std::size_t(to_new[v])] = x[v];
+  EXPECT_TRUE(by_new[0][0] < 1 && by_new[0][1] < 1 && by_new[0][2] < 1);
+  EXPECT_TRUE(by_new.back()[0] > 4 && by_new.back()[1] > 4 && by_new.back()[2] > 4);
+  // Tets in increasing first (smallest new) vertex.
+  int previous = -1;
+  for(int t : tet_order) {
+    int first = int(x.size());
+    for(int v : m.tets[std::size_t(t)]) first = (std::min)(first, to_new[std::size_t(v)]);
+    EXPECT_LE(previous, first);
+    previous = first;
+  }
+}
+
 TEST(Volume, PlateauNeedsTheWholeWindowOfSmallRelativeProgress)
 {
   // (E_prev − E)/(E − 2) below the plateau value for `plateau_window`

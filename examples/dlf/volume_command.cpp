@@ -134,6 +134,14 @@ int volume_command(const std::vector<std::string>& args)
     ("cholesky-every", po::value<std::size_t>(&options.cholesky_every)->value_name("K"),
      "precondition the conjugate gradients by a sparse Cholesky factorisation of the Gauss-Newton matrix, "
      "refreshed every K iterations (default 0: the 3x3 blocks of every vertex)")
+    ("coarse-aggregate", po::value<std::size_t>(&options.coarse_aggregate)->value_name("K"),
+     "the conjugate gradients' coarse level: aggregates of K vertices, each moving by one translation "
+     "(default 64; 0: the 3x3 blocks alone)")
+    ("fixed-cg-tolerance", "solve every Gauss-Newton system to a relative residual of 1e-3 (up to the cap) "
+     "instead of following the Eisenstat-Walker forcing term")
+    ("threads", po::value<int>(&options.threads)->value_name("N"),
+     "threads of the flow (default 0: automatic, one below 150,000 tetrahedra, else the hardware threads, "
+     "at most 8); the result does not depend on it")
     ("untangle-iterations", po::value<std::size_t>(&options.untangle_max_iterations)->value_name("N"),
      "iteration cap of the start's untangling, its stages and regions together (default 12000; at most 10000 per region of a stage)")
     ("border-start", po::value<std::string>(&border_start)->value_name("tutte|conformal"),
@@ -176,6 +184,8 @@ int volume_command(const std::vector<std::string>& args)
   if(has_roi && !density_file.empty()) throw Cli_error("--density and --roi-ball exclude each other");
   options.record_history = vm.count("history") != 0;
   options.star_shaped_border = vm.count("star-shaped") != 0;
+  options.cg_forcing = vm.count("fixed-cg-tolerance") == 0;
+  if(options.threads < 0) throw Cli_error("--threads must be 0 (automatic) or positive");
   if(border_start == "conformal") options.border.sphere.start = SMP::Discrete_lie_flow_sphere_start::CONFORMAL;
   else if(border_start != "tutte") throw Cli_error("--border-start takes tutte or conformal");
   Output_files files;
@@ -308,7 +318,10 @@ int volume_command(const std::vector<std::string>& args)
                    { "achieved_share", roi_achieved }, { "relative_error", roi_achieved / roi_target - 1 } };
     j["options"] = { { "tolerance", options.tolerance }, { "share_tolerance", options.share_tolerance }, { "max_iterations", options.max_iterations }, { "mu", options.mu },
                        { "border_start", border_start }, { "border_max_iterations", options.border.max_iterations },
-                       { "untangle_iterations", options.untangle_max_iterations } };
+                       { "untangle_iterations", options.untangle_max_iterations },
+                       { "coarse_aggregate", options.coarse_aggregate }, { "cg_forcing", options.cg_forcing },
+                       { "threads", options.threads },
+                       { "threads_used", D::volume_flow_threads(options.threads, mesh.tets.size()) } };
     j["counters"] = { { "rejected_by_exact_check", R.rejected_by_exact_check }, { "cg_iterations", R.cg_iterations } };
     j["seconds"] = { { "border", R.seconds_border }, { "interior", R.seconds_interior }, { "untangle", R.seconds_untangle },
                      { "flow", R.seconds_flow }, { "total", R.seconds_total } };

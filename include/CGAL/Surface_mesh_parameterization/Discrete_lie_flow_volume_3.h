@@ -43,6 +43,19 @@ struct Discrete_lie_flow_volume_options
   /// iterations to a lower D_vol on meshes with protrusions, each several
   /// times dearer; doc/volume.md).
   std::size_t cholesky_every = 0;
+  /// Threads of the flow's per-tetrahedron and per-vertex passes: 0 (the
+  /// default) automatic, one below 150,000 tetrahedra, else the hardware
+  /// threads (at most 8); the result is the same whatever the number.
+  int threads = 0;
+  /// The conjugate gradients' coarse level: aggregates of this many
+  /// vertices (spatially compact), each moving by one translation, solved
+  /// exactly besides the 3 × 3 blocks (0: the blocks alone, 5 to 10 times
+  /// more flow time at a million tetrahedra; doc/volume.md).
+  std::size_t coarse_aggregate = 64;
+  /// Inexact Newton: the conjugate gradients' tolerance follows Eisenstat
+  /// and Walker's forcing term, loose far from the minimum (false: a fixed
+  /// relative tolerance of 1e-3, up to the cap).
+  bool cg_forcing = true;
   /// Iteration cap of the start's untangling, its stages and regions
   /// together (each region of a stage at most 10,000; volume_untangle.h).
   std::size_t untangle_max_iterations = 12000;
@@ -293,6 +306,9 @@ private:
     S.mu = O.mu;
     S.cg_max_iterations = O.cg_max_iterations;
     S.cholesky_every = O.cholesky_every;
+    S.threads = O.threads;
+    S.coarse_aggregate = O.coarse_aggregate;
+    S.cg_forcing = O.cg_forcing;
     S.star_shaped_border = O.star_shaped_border;
     S.share_tolerance = O.share_tolerance;
     S.callback = O.callback; // the flow's iterations too, not only the start's
