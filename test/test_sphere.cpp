@@ -1181,9 +1181,10 @@ TEST(Sphere_start, ConformalStartIsCertifiedAndConformal)
 // Tutte's start reweighted by the area ratios: on camel (Tutte's start
 // compressed to D_area 4.8e13) it is certified by the exact predicate, far
 // less compressed, and no face holds a larger share of the sphere; the
-// D_area it reports is the flat one recomputed here. Where a round is
-// refused (cow: the first reweighted map does not lift to a certified one)
-// or the start is not compressed (sphere), the start is Tutte's, unchanged.
+// D_area it reports is the flat one recomputed here. On a mesh below
+// `min_faces` (cow, sphere) the start is Tutte's, unchanged; and where every
+// round is refused (cow with no size limit: no reweighted map lifts to a
+// certified one) the map is left as it was.
 TEST(Sphere_start, ReweightedTutteStartIsCertifiedAndLessCompressed)
 {
   for(const char* name : { "camel", "cow", "sphere" }) {
@@ -1213,6 +1214,16 @@ TEST(Sphere_start, ReweightedTutteStartIsCertifiedAndLessCompressed)
     } else {
       EXPECT_EQ(r.reweightings, 0u);
       EXPECT_TRUE(reweighted == plain);
+    }
+    if(std::string(name) == "cow") {
+      D::Sphere_reweighting any_size;
+      any_size.min_faces = 0;
+      std::vector<V3> q = plain;
+      double d = t.d_area, scale = t.scale;
+      EXPECT_EQ(D::reweighted_tutte_map<D::Default_spd_solver>(P, t.puncture, D::Area_barrier_energy(P.target), q, d,
+                                                               scale, any_size), 0u);
+      EXPECT_TRUE(q == plain);
+      EXPECT_EQ(d, t.d_area);
     }
   }
 }
