@@ -153,12 +153,13 @@ inline std::vector<std::pair<std::uint64_t, double> > conformal_edge_weights(con
 /// The mesh minus face `puncture` mapped onto the plane with the puncture's
 /// corners fixed (`puncture_corners()`), the faces counter-clockwise: the
 /// harmonic map of Tutte's uniform weights, or with `conformal` of
-/// `conformal_edge_weights()` (the discrete conformal map), or of `weights`
-/// when not null (positive, one per undirected edge, sorted by
-/// `undirected_edge_key()`). False if the solve fails.
+/// `conformal_edge_weights()` (the discrete conformal map), or of
+/// `corner_weights` when not null (positive; entry 3f + k the weight of the
+/// edge from corner k to corner k + 1 of face f, equal from both its faces).
+/// False if the solve fails.
 template <class EigenSolver>
 bool punctured_planar_map(const Sphere_problem& P, int puncture, bool conformal, std::vector<Vec2>& uv,
-                          const std::vector<std::pair<std::uint64_t, double> >* weights = nullptr)
+                          const std::vector<double>* corner_weights = nullptr)
 {
   const std::size_t n = P.xyz.size();
   const Face& hole = P.faces[std::size_t(puncture)];
@@ -173,22 +174,22 @@ bool punctured_planar_map(const Sphere_problem& P, int puncture, bool conformal,
   for(int k = 0; k < 3; ++k) uv[std::size_t(order[k])] = corners[std::size_t(k)];
   if(ni == 0) return true;
   std::vector<std::pair<std::uint64_t, double> > cot;
-  if(conformal && !weights) cot = conformal_edge_weights(P);
-  const std::vector<std::pair<std::uint64_t, double> >* table = weights ? weights : (conformal ? &cot : nullptr);
+  if(conformal && !corner_weights) cot = conformal_edge_weights(P);
   // Each edge of a closed mesh is seen from its two faces: half its weight from each.
-  auto half_weight = [table](int i, int j) {
-    if(!table) return 0.5;
+  auto half_weight = [&cot, corner_weights](std::size_t f, int k, int i, int j) {
+    if(corner_weights) return 0.5 * (*corner_weights)[3 * f + std::size_t(k)];
+    if(cot.empty()) return 0.5;
     const std::uint64_t key = undirected_edge_key(i, j);
-    return 0.5 * std::lower_bound(table->begin(), table->end(),
-                                  std::make_pair(key, -std::numeric_limits<double>::infinity()))->second;
+    return 0.5 * std::lower_bound(cot.begin(), cot.end(), std::make_pair(key, -std::numeric_limits<double>::infinity()))->second;
   };
   std::vector<Eigen::Triplet<double> > trip;
   trip.reserve(P.faces.size() * 6);
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(ni, 2);
-  for(const Face& t : P.faces)
+  for(std::size_t f = 0; f < P.faces.size(); ++f)
     for(int k = 0; k < 3; ++k) {
+      const Face& t = P.faces[f];
       const int i = t[k], j = t[(k + 1) % 3];
-      const double w = half_weight(i, j);
+      const double w = half_weight(f, k, i, j);
       const int a = idx[std::size_t(i)], b = idx[std::size_t(j)];
       if(a >= 0) trip.emplace_back(a, a, w);
       if(b >= 0) trip.emplace_back(b, b, w);
@@ -300,28 +301,28 @@ std::size_t reweighted_tutte_map(const Sphere_problem& P, int puncture, const Ar
 {
   if(!(d_area > settings.above) || P.faces.size() < settings.min_faces) return 0;
   const std::size_t F = P.faces.size();
-  // The undirected edges (sorted keys, weight 1) and the two faces of each.
-  std::vector<std::pair<std::uint64_t, double> > w;
-  w.reserve(3 * F);
+  // The undirected edges (sorted keys), the edge of each face corner (from
+  // corner k to k + 1) and the two faces of each edge; weights start at 1.
+  std::vector<std::uint64_t> keys;
+  keys.reserve(3 * F);
   for(const Face& t : P.faces)
-    for(int k = 0; k < 3; ++k) w.emplace_back(undirected_edge_key(t[k], t[(k + 1) % 3]), 1.);
-  std::sort(w.begin(), w.end());
-  w.erase(std::unique(w.begin(), w.end(), [](const std::pair<std::uint64_t, double>& a,
-                                             const std::pair<std::uint64_t, double>& b) { return a.first == b.first; }),
-          w.end());
-  std::vector<std::array<int, 2> > faces_of(w.size(), std::array<int, 2>{{ -1, -1 }});
-  for(std::size_t f = 0; f < F; ++f)
-    for(int k = 0; k < 3; ++k) {
-      const std::uint64_t key = undirected_edge_key(P.faces[f][k], P.faces[f][(k + 1) % 3]);
-      const std::size_t e = std::size_t(std::lower_bound(w.begin(), w.end(), std::make_pair(key, -1.)) - w.begin());
-      faces_of[e][faces_of[e][0] < 0 ? 0 : 1] = int(f);
-    }
+    for(int k = 0; k < 3; ++k) keys.push_back(undirected_edge_key(t[k], t[(k + 1) % 3]));
+  std::vector<std::size_t> corner_edge(3 * F);
+  std::vector<std::uint64_t> edges(keys);
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::vector<std::array<int, 2> > faces_of(edges.size(), std::array<int, 2>{{ -1, -1 }});
+  for(std::size_t c = 0; c < 3 * F; ++c) {
+    const std::size_t e = std::size_t(std::lower_bound(edges.begin(), edges.end(), keys[c]) - edges.begin());
+    corner_edge[c] = e;
+    faces_of[e][faces_of[e][0] < 0 ? 0 : 1] = int(c / 3);
+  }
+  std::vector<double> w(edges.size(), 1.), trial, corner_weights(3 * F);
   double T = 0;
   for(double t : P.target) T += t;
   double share = largest_face_share(sphere, P.faces);
   std::size_t kept = 0;
   std::vector<double> u, log_ratio(F);
-  std::vector<std::pair<std::uint64_t, double> > trial;
   std::vector<Vec2> uv;
   std::vector<Vec3> p;
   // One round with the given exponent from the last kept weights; true if kept.
@@ -333,14 +334,14 @@ std::size_t reweighted_tutte_map(const Sphere_problem& P, int puncture, const Ar
     trial = w;
     double largest = 0;
     for(std::size_t e = 0; e < trial.size(); ++e) {
-      trial[e].second *= std::exp(0.5 * exponent *
-                                  (log_ratio[std::size_t(faces_of[e][0])] + log_ratio[std::size_t(faces_of[e][1])]));
-      largest = (std::max)(largest, trial[e].second);
+      trial[e] *= std::exp(0.5 * exponent * (log_ratio[std::size_t(faces_of[e][0])] + log_ratio[std::size_t(faces_of[e][1])]));
+      largest = (std::max)(largest, trial[e]);
     }
     bool normal = std::isnormal(largest);
-    for(std::size_t e = 0; normal && e < trial.size(); ++e) normal = std::isnormal(trial[e].second /= largest);
+    for(std::size_t e = 0; normal && e < trial.size(); ++e) normal = std::isnormal(trial[e] /= largest);
     if(!normal) return false; // the weights' range left double precision
-    if(!punctured_planar_map<EigenSolver>(P, puncture, false, uv, &trial)) return false;
+    for(std::size_t c = 0; c < 3 * F; ++c) corner_weights[c] = trial[corner_edge[c]];
+    if(!punctured_planar_map<EigenSolver>(P, puncture, false, uv, &corner_weights)) return false;
     lift_to_sphere(uv, 2, Vec2{{ 0, 0 }}, false, p);
     signed_areas_sphere(p, P.faces, u);
     std::size_t negative = 0;
