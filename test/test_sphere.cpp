@@ -1178,6 +1178,56 @@ TEST(Sphere_start, ConformalStartIsCertifiedAndConformal)
   EXPECT_LE(sphere_d_area(m.xyz, p, m.faces).first, 2.01 + 1e-9);
 }
 
+// Tutte's start reweighted by the area ratios: on camel (Tutte's start
+// compressed to D_area 4.8e13) it is certified by the exact predicate, far
+// less compressed, and no face holds a larger share of the sphere; the
+// D_area it reports is the flat one recomputed here. On a mesh below
+// `min_faces` (cow, sphere) the start is Tutte's, unchanged; and where every
+// round is refused (cow with no size limit: no reweighted map lifts to a
+// certified one) the map is left as it was.
+TEST(Sphere_start, ReweightedTutteStartIsCertifiedAndLessCompressed)
+{
+  for(const char* name : { "camel", "cow", "sphere" }) {
+    SCOPED_TRACE(name);
+    const Index_mesh m = index_mesh(read_sphere_mesh(name));
+    D::Sphere_problem P;
+    P.xyz = m.xyz;
+    P.faces = m.faces;
+    ASSERT_TRUE(D::validate_sphere_geometry(P, {}).ok());
+    std::vector<V3> plain, reweighted;
+    const D::Sphere_initial_outcome t = D::certified_sphere_initial_map<D::Default_spd_solver>(P, plain);
+    const D::Sphere_initial_outcome r =
+      D::certified_sphere_initial_map<D::Default_spd_solver>(P, reweighted, false, 3, true, false, true);
+    ASSERT_TRUE(t.certified) << t.message;
+    ASSERT_TRUE(r.certified) << r.message;
+    EXPECT_EQ(t.reweightings, 0u);
+    EXPECT_EQ(r.puncture, t.puncture);
+    EXPECT_EQ(exact_sphere_signs(reweighted, m.faces).pos, m.faces.size());
+    const double d_plain = sphere_d_area(m.xyz, plain, m.faces).first;
+    const double d_reweighted = sphere_d_area(m.xyz, reweighted, m.faces).first;
+    EXPECT_NEAR(d_reweighted, r.d_area, 1e-9 * d_reweighted);
+    if(std::string(name) == "camel") {
+      EXPECT_GE(r.reweightings, 1u);
+      EXPECT_GT(d_plain, 1e13);
+      EXPECT_LT(d_reweighted, 1e-6 * d_plain);
+      EXPECT_LE(D::largest_face_share(reweighted, m.faces), D::largest_face_share(plain, m.faces));
+    } else {
+      EXPECT_EQ(r.reweightings, 0u);
+      EXPECT_TRUE(reweighted == plain);
+    }
+    if(std::string(name) == "cow") {
+      D::Sphere_reweighting any_size;
+      any_size.min_faces = 0;
+      std::vector<V3> q = plain;
+      double d = t.d_area, scale = t.scale;
+      EXPECT_EQ(D::reweighted_tutte_map<D::Default_spd_solver>(P, t.puncture, D::Area_barrier_energy(P.target), q, d,
+                                                               scale, any_size), 0u);
+      EXPECT_TRUE(q == plain);
+      EXPECT_EQ(d, t.d_area);
+    }
+  }
+}
+
 // A caller's start: an earlier result starts a run that has nothing left to
 // do; a folded one, a point at the centre and GIVEN without a map are refused.
 TEST(Sphere_start, GivenStartIsCertifiedAndUsed)

@@ -11,6 +11,9 @@
 // cap around the north pole; scaling keeps a conformal map conformal). The
 // result is accepted only when every face is positively oriented by CGAL's
 // exact predicate on the stored doubles; otherwise other punctures are tried.
+// A Tutte start compressed by many decades may then be reweighted: Tutte's
+// map again with the edge weights scaled by the faces' area ratios, which
+// keeps it bijective (any positive weights do) and certified the same way.
 // A caller's own start is normalised and certified the same way.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_SPHERE_INITIAL_MAP_H
@@ -21,6 +24,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/area_elements.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sparse_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_problem.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_spherical_area.h>
 
 #include <Eigen/Sparse>
 
@@ -48,6 +52,7 @@ struct Sphere_initial_outcome
   double scale = 0;           ///< the plane scale s of the accepted map
   double d_area = 0;          ///< D_area of the accepted map
   std::size_t attempts = 0;   ///< punctures tried
+  std::size_t reweightings = 0; ///< reweighted Tutte maps accepted (`reweighted_tutte_map()`)
   std::string message;        ///< why no map was certified
 };
 
@@ -148,10 +153,13 @@ inline std::vector<std::pair<std::uint64_t, double> > conformal_edge_weights(con
 /// The mesh minus face `puncture` mapped onto the plane with the puncture's
 /// corners fixed (`puncture_corners()`), the faces counter-clockwise: the
 /// harmonic map of Tutte's uniform weights, or with `conformal` of
-/// `conformal_edge_weights()` (the discrete conformal map). False if the
-/// solve fails.
+/// `conformal_edge_weights()` (the discrete conformal map), or of
+/// `corner_weights` when not null (positive; entry 3f + k the weight of the
+/// edge from corner k to corner k + 1 of face f, equal from both its faces).
+/// False if the solve fails.
 template <class EigenSolver>
-bool punctured_planar_map(const Sphere_problem& P, int puncture, bool conformal, std::vector<Vec2>& uv)
+bool punctured_planar_map(const Sphere_problem& P, int puncture, bool conformal, std::vector<Vec2>& uv,
+                          const std::vector<double>* corner_weights = nullptr)
 {
   const std::size_t n = P.xyz.size();
   const Face& hole = P.faces[std::size_t(puncture)];
@@ -166,20 +174,22 @@ bool punctured_planar_map(const Sphere_problem& P, int puncture, bool conformal,
   for(int k = 0; k < 3; ++k) uv[std::size_t(order[k])] = corners[std::size_t(k)];
   if(ni == 0) return true;
   std::vector<std::pair<std::uint64_t, double> > cot;
-  if(conformal) cot = conformal_edge_weights(P);
+  if(conformal && !corner_weights) cot = conformal_edge_weights(P);
   // Each edge of a closed mesh is seen from its two faces: half its weight from each.
-  auto half_weight = [&cot, conformal](int i, int j) {
-    if(!conformal) return 0.5;
+  auto half_weight = [&cot, corner_weights](std::size_t f, int k, int i, int j) {
+    if(corner_weights) return 0.5 * (*corner_weights)[3 * f + std::size_t(k)];
+    if(cot.empty()) return 0.5;
     const std::uint64_t key = undirected_edge_key(i, j);
     return 0.5 * std::lower_bound(cot.begin(), cot.end(), std::make_pair(key, -std::numeric_limits<double>::infinity()))->second;
   };
   std::vector<Eigen::Triplet<double> > trip;
   trip.reserve(P.faces.size() * 6);
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(ni, 2);
-  for(const Face& t : P.faces)
+  for(std::size_t f = 0; f < P.faces.size(); ++f)
     for(int k = 0; k < 3; ++k) {
+      const Face& t = P.faces[f];
       const int i = t[k], j = t[(k + 1) % 3];
-      const double w = half_weight(i, j);
+      const double w = half_weight(f, k, i, j);
       const int a = idx[std::size_t(i)], b = idx[std::size_t(j)];
       if(a >= 0) trip.emplace_back(a, a, w);
       if(b >= 0) trip.emplace_back(b, b, w);
@@ -236,6 +246,129 @@ inline std::pair<double, double> best_lift_scale(const Sphere_problem& P, const 
   return std::make_pair(best_t, best_E);
 }
 
+/// The largest share of the sphere held by one face (its spherical area over 4π).
+inline double largest_face_share(const std::vector<Vec3>& p, const std::vector<Face>& faces)
+{
+  std::vector<double> a;
+  spherical_areas_sphere(p, faces, a);
+  double m = 0;
+  for(double x : a) m = (std::max)(m, x);
+  return m / (4 * 3.14159265358979323846);
+}
+
+/// When and how a compressed Tutte start is reweighted (`reweighted_tutte_map()`).
+struct Sphere_reweighting
+{
+  /// Reweight while the flat D_area is above this: each decade of start
+  /// D_area costs the opening about six steps, and a start below it opens
+  /// in a few.
+  double above = 1e3;
+  /// ... and only on meshes of at least this many faces. On coarse meshes the
+  /// polish's plateau sits near the goals and moves with the start: dino
+  /// (7,828 faces) converges from Tutte's start (mean |log r| 0.0200) but
+  /// stops on a plateau at 0.029 from the reweighted one; and their openings
+  /// cost little.
+  std::size_t min_faces = 10000;
+  /// A round multiplies each edge's weight by (r_f r_g)^(exponent/2), r the
+  /// area ratios of its two faces (cone areas, normalised totals); a round
+  /// not kept halves the exponent for the next, down to `least_exponent`.
+  double exponent = 1;
+  double least_exponent = 0.25;
+  /// A round is kept only if it divides D_area by at least this and no face
+  /// then holds a larger share of the sphere than before: lowering D_area by
+  /// handing a few faces next to the puncture a large part of the sphere
+  /// (D_area weighs them by their small targets) makes a start that the
+  /// opening stalls on.
+  double least_gain = 10;
+  /// Rounds tried at most, kept or not (each a Tutte solve and a scale search).
+  std::size_t max_rounds = 4;
+};
+
+/// Lowers the compression of a certified Tutte start (`sphere`, punctured at
+/// `puncture`, flat D_area `d_area`, plane scale `scale`): Tutte's map again
+/// with each edge's weight scaled by the area ratios of its two faces, so
+/// that compressed regions (small ratios, weaker springs) spread and
+/// stretched ones contract. Positive weights keep the planar map a bijection
+/// in exact arithmetic; each round's map is lifted at its best scale and
+/// kept only if certified by the exact predicate and better as set out in
+/// `Sphere_reweighting`; a round not kept is retried from the last kept
+/// weights with half the exponent. Returns the rounds kept; `sphere`,
+/// `d_area` and `scale` describe the last.
+template <class EigenSolver>
+std::size_t reweighted_tutte_map(const Sphere_problem& P, int puncture, const Area_barrier_energy& energy,
+                                 std::vector<Vec3>& sphere, double& d_area, double& scale,
+                                 const Sphere_reweighting& settings = Sphere_reweighting())
+{
+  if(!(d_area > settings.above) || P.faces.size() < settings.min_faces) return 0;
+  const std::size_t F = P.faces.size();
+  // The undirected edges (sorted keys), the edge of each face corner (from
+  // corner k to k + 1) and the two faces of each edge; weights start at 1.
+  std::vector<std::uint64_t> keys;
+  keys.reserve(3 * F);
+  for(const Face& t : P.faces)
+    for(int k = 0; k < 3; ++k) keys.push_back(undirected_edge_key(t[k], t[(k + 1) % 3]));
+  std::vector<std::size_t> corner_edge(3 * F);
+  std::vector<std::uint64_t> edges(keys);
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::vector<std::array<int, 2> > faces_of(edges.size(), std::array<int, 2>{{ -1, -1 }});
+  for(std::size_t c = 0; c < 3 * F; ++c) {
+    const std::size_t e = std::size_t(std::lower_bound(edges.begin(), edges.end(), keys[c]) - edges.begin());
+    corner_edge[c] = e;
+    faces_of[e][faces_of[e][0] < 0 ? 0 : 1] = int(c / 3);
+  }
+  std::vector<double> w(edges.size(), 1.), trial, corner_weights(3 * F);
+  double T = 0;
+  for(double t : P.target) T += t;
+  double share = largest_face_share(sphere, P.faces);
+  std::size_t kept = 0;
+  std::vector<double> u, log_ratio(F);
+  std::vector<Vec2> uv;
+  std::vector<Vec3> p;
+  // One round with the given exponent from the last kept weights; true if kept.
+  auto round = [&](double exponent) {
+    cone_areas_sphere(sphere, P.faces, u);
+    double U = 0;
+    for(double a : u) U += a;
+    for(std::size_t f = 0; f < F; ++f) log_ratio[f] = std::log((u[f] / U) / (P.target[f] / T));
+    trial = w;
+    double largest = 0;
+    for(std::size_t e = 0; e < trial.size(); ++e) {
+      trial[e] *= std::exp(0.5 * exponent * (log_ratio[std::size_t(faces_of[e][0])] + log_ratio[std::size_t(faces_of[e][1])]));
+      largest = (std::max)(largest, trial[e]);
+    }
+    bool normal = std::isnormal(largest);
+    for(std::size_t e = 0; normal && e < trial.size(); ++e) normal = std::isnormal(trial[e] /= largest);
+    if(!normal) return false; // the weights' range left double precision
+    for(std::size_t c = 0; c < 3 * F; ++c) corner_weights[c] = trial[corner_edge[c]];
+    if(!punctured_planar_map<EigenSolver>(P, puncture, false, uv, &corner_weights)) return false;
+    lift_to_sphere(uv, 2, Vec2{{ 0, 0 }}, false, p);
+    signed_areas_sphere(p, P.faces, u);
+    std::size_t negative = 0;
+    for(double a : u) if(a < 0) ++negative;
+    const bool mirror = 2 * negative > u.size();
+    const std::pair<double, double> best = best_lift_scale(P, energy, uv, Vec2{{ 0, 0 }}, mirror);
+    if(!std::isfinite(best.second)) return false;
+    lift_to_sphere(uv, std::exp(best.first), Vec2{{ 0, 0 }}, mirror, p);
+    if(!count_orientations_sphere(p, P.faces).all_positive()) return false;
+    const double D = flat_d_area(p, P.faces, P.target);
+    const double sh = largest_face_share(p, P.faces);
+    if(!(D * settings.least_gain <= d_area) || sh > share) return false;
+    sphere.swap(p);
+    w.swap(trial);
+    d_area = D;
+    share = sh;
+    scale = std::exp(best.first);
+    return true;
+  };
+  double exponent = settings.exponent;
+  for(std::size_t r = 0; r < settings.max_rounds && exponent >= settings.least_exponent && d_area > settings.above; ++r) {
+    if(round(exponent)) ++kept;
+    else exponent *= 0.5;
+  }
+  return kept;
+}
+
 /// Extremal faces: those with the largest and smallest centroid coordinate
 /// along each axis and the one farthest from the centre of mass. On a shape
 /// with protrusions they sit at protrusion tips, whose puncture keeps that
@@ -280,10 +413,13 @@ inline std::vector<int> extremal_faces(const Sphere_problem& P)
 /// 5–7 s on bunny00 and its flow needed more iterations, 206 against 33 from
 /// the first candidate; the others are a fallback for when it fails.)
 /// `sphere` receives unit vectors only when one is certified.
+/// With `reweight` (Tutte's start only), a start compressed beyond
+/// `Sphere_reweighting::above` is then reweighted (`reweighted_tutte_map()`).
 template <class EigenSolver>
 Sphere_initial_outcome certified_sphere_initial_map(const Sphere_problem& P, std::vector<Vec3>& sphere,
                                                     bool conformal = false, std::size_t well_shaped = 3,
-                                                    bool extremal = true, bool keep_best = false)
+                                                    bool extremal = true, bool keep_best = false,
+                                                    bool reweight = false)
 {
   Sphere_initial_outcome out;
   const Area_barrier_energy energy(P.target);
@@ -325,7 +461,11 @@ Sphere_initial_outcome certified_sphere_initial_map(const Sphere_problem& P, std
     out.scale = std::exp(best.first);
     if(!keep_best) break;
   }
-  if(out.certified) out.d_area = flat_d_area(sphere, P.faces, P.target);
+  if(out.certified) {
+    out.d_area = flat_d_area(sphere, P.faces, P.target);
+    if(reweight && !conformal)
+      out.reweightings = reweighted_tutte_map<EigenSolver>(P, out.puncture, energy, sphere, out.d_area, out.scale);
+  }
   else out.message = std::string("no ") + (conformal ? "conformal " : "") + "initial spherical map could be certified after " +
                      std::to_string(out.attempts) + " punctures:" + why.str();
   return out;

@@ -51,8 +51,11 @@ Error_code start_sphere(Sphere_problem& P, std::vector<Vec3>& p, const Discrete_
     if(opt.sphere.start == Discrete_lie_flow_sphere_start::GIVEN)
       return report_failure(R, ERROR_WRONG_PARAMETER, "the start GIVEN needs a map (set_initial_map())");
     R.sphere_start = opt.sphere.start;
-    const Sphere_initial_outcome init =
-      certified_sphere_initial_map<EigenSolver>(P, p, opt.sphere.start == Discrete_lie_flow_sphere_start::CONFORMAL);
+    // The certified flow opens a less compressed start in fewer steps; the
+    // paper's modes keep the plain Tutte start they are measured from.
+    const bool conformal = opt.sphere.start == Discrete_lie_flow_sphere_start::CONFORMAL;
+    const Sphere_initial_outcome init = certified_sphere_initial_map<EigenSolver>(
+      P, p, conformal, 3, true, false, opt.mode == Discrete_lie_flow_mode::CERTIFIED);
     R.initial_attempts = init.attempts;
     if(!init.certified) return report_failure(R, ERROR_INITIAL_MAP_FOLDED, init.message);
     R.puncture_face = init.puncture;
