@@ -66,16 +66,7 @@ int main(int argc, char** argv)
     return 2;
   }
   SMP::Discrete_lie_flow_volume_options O;
-  D::Volume_flow_settings S;
-  S.tolerance = O.tolerance;
-  S.max_iterations = O.max_iterations;
-  S.mu = O.mu;
-  S.cg_max_iterations = O.cg_max_iterations;
-  S.cholesky_every = O.cholesky_every;
-  S.star_shaped_border = O.star_shaped_border;
-  S.threads = O.threads;
-  S.coarse_aggregate = O.coarse_aggregate;
-  S.cg_forcing = O.cg_forcing;
+  D::Volume_flow_settings S = D::volume_flow_settings(O);
   bool verbose = false;
   for(int i = 3; i < argc; ++i) {
     const std::string a = argv[i];

@@ -136,6 +136,30 @@ struct Discrete_lie_flow_volume_report
   std::vector<double> volume_ratio; ///< r_t per tet of the result
 };
 
+namespace internal {
+namespace dlf {
+
+/// The flow's settings that come straight from the options (the callback
+/// and the density levels are set by the caller).
+inline Volume_flow_settings volume_flow_settings(const Discrete_lie_flow_volume_options& O)
+{
+  Volume_flow_settings S;
+  S.tolerance = O.tolerance;
+  S.max_iterations = O.max_iterations;
+  S.mu = O.mu;
+  S.cg_max_iterations = O.cg_max_iterations;
+  S.cholesky_every = O.cholesky_every;
+  S.threads = O.threads;
+  S.coarse_aggregate = O.coarse_aggregate;
+  S.cg_forcing = O.cg_forcing;
+  S.star_shaped_border = O.star_shaped_border;
+  S.share_tolerance = O.share_tolerance;
+  return S;
+}
+
+} // namespace dlf
+} // namespace internal
+
 /// \ingroup PkgDiscreteLieFlowParameterizers
 ///
 /// Volume-preserving (or density-prescribed) map of a tetrahedral mesh of a
@@ -300,17 +324,7 @@ private:
     std::vector<double> u;
     D::tet_dets(x, tets, u);
     R.initial_d_vol = energy.value(u, 0);
-    D::Volume_flow_settings S;
-    S.tolerance = O.tolerance;
-    S.max_iterations = O.max_iterations;
-    S.mu = O.mu;
-    S.cg_max_iterations = O.cg_max_iterations;
-    S.cholesky_every = O.cholesky_every;
-    S.threads = O.threads;
-    S.coarse_aggregate = O.coarse_aggregate;
-    S.cg_forcing = O.cg_forcing;
-    S.star_shaped_border = O.star_shaped_border;
-    S.share_tolerance = O.share_tolerance;
+    D::Volume_flow_settings S = D::volume_flow_settings(O);
     S.callback = O.callback; // the flow's iterations too, not only the start's
     if(!O.tet_density.empty() && O.share_tolerance > 0) {
       std::map<double, int> ids;

@@ -246,6 +246,21 @@ inline std::pair<double, double> best_lift_scale(const Sphere_problem& P, const 
   return std::make_pair(best_t, best_E);
 }
 
+/// best_lift_scale() in the orientation most faces have when `uv` is lifted
+/// at the unit scale (the planar map may come out mirrored); `mirror` is set
+/// to that orientation, `p` and `u` are scratch.
+inline std::pair<double, double> best_oriented_lift(const Sphere_problem& P, const Area_barrier_energy& energy,
+                                                    const std::vector<Vec2>& uv, bool& mirror,
+                                                    std::vector<Vec3>& p, std::vector<double>& u)
+{
+  lift_to_sphere(uv, 2, Vec2{{ 0, 0 }}, false, p);
+  signed_areas_sphere(p, P.faces, u);
+  std::size_t negative = 0;
+  for(double a : u) if(a < 0) ++negative;
+  mirror = 2 * negative > u.size();
+  return best_lift_scale(P, energy, uv, Vec2{{ 0, 0 }}, mirror);
+}
+
 /// The largest share of the sphere held by one face (its spherical area over 4π).
 inline double largest_face_share(const std::vector<Vec3>& p, const std::vector<Face>& faces)
 {
@@ -342,12 +357,8 @@ std::size_t reweighted_tutte_map(const Sphere_problem& P, int puncture, const Ar
     if(!normal) return false; // the weights' range left double precision
     for(std::size_t c = 0; c < 3 * F; ++c) corner_weights[c] = trial[corner_edge[c]];
     if(!punctured_planar_map<EigenSolver>(P, puncture, false, uv, &corner_weights)) return false;
-    lift_to_sphere(uv, 2, Vec2{{ 0, 0 }}, false, p);
-    signed_areas_sphere(p, P.faces, u);
-    std::size_t negative = 0;
-    for(double a : u) if(a < 0) ++negative;
-    const bool mirror = 2 * negative > u.size();
-    const std::pair<double, double> best = best_lift_scale(P, energy, uv, Vec2{{ 0, 0 }}, mirror);
+    bool mirror = false;
+    const std::pair<double, double> best = best_oriented_lift(P, energy, uv, mirror, p, u);
     if(!std::isfinite(best.second)) return false;
     lift_to_sphere(uv, std::exp(best.first), Vec2{{ 0, 0 }}, mirror, p);
     if(!count_orientations_sphere(p, P.faces).all_positive()) return false;
@@ -438,13 +449,8 @@ Sphere_initial_outcome certified_sphere_initial_map(const Sphere_problem& P, std
       why << " puncture " << f << ": the " << (conformal ? "cotangent" : "Tutte") << " solve failed;";
       continue;
     }
-    // Orientation of the lift, decided once on the unit scale by the majority.
-    lift_to_sphere(uv, 2, Vec2{{ 0, 0 }}, false, p);
-    signed_areas_sphere(p, P.faces, u);
-    std::size_t negative = 0;
-    for(double a : u) if(a < 0) ++negative;
-    const bool mirror = 2 * negative > u.size();
-    const std::pair<double, double> best = best_lift_scale(P, energy, uv, Vec2{{ 0, 0 }}, mirror);
+    bool mirror = false;
+    const std::pair<double, double> best = best_oriented_lift(P, energy, uv, mirror, p, u);
     if(!std::isfinite(best.second)) { why << " puncture " << f << ": no scale keeps every face positive in floating point;"; continue; }
     if(!(best.second < best_E)) continue;
     lift_to_sphere(uv, std::exp(best.first), Vec2{{ 0, 0 }}, mirror, p);
