@@ -7,16 +7,20 @@
 // sphere), every step bounded by the tets' critical cubics and certified by
 // the exact predicate. Volume_energy's regularised denominator
 // χ_ε(u) = (u + √(ε² + u²))/2 (Garanzha et al.) serves the untangling of the
-// start (volume_untangle.h); the flow itself runs at ε = 0.
+// start (volume_untangle.h); the flow itself runs at ε = 0. The unknowns and
+// their blocks are in volume_dofs.h, the conjugate gradients' coarse level
+// in volume_coarse_level.h, the tets' cubics in volume_geometry.h.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_FLOW_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_FLOW_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/critical_step.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow_driver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/parallel_ranges.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/solver_threads.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_coarse_level.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_dofs.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_geometry.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_mesh.h>
 
 #include <Eigen/Dense>
@@ -36,29 +40,6 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 namespace dlf {
-
-/// Coefficients (a, b, c, d) of det[p1 − p0 + λ(d1 − d0), p2 − p0 + λ(d2 − d0), p3 − p0 + λ(d3 − d0)],
-/// six times the volume of a tet whose corners move linearly (difference
-/// form: d is the current determinant).
-inline std::array<double, 4> tet_volume_cubic(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3,
-                                              const Vec3& d0, const Vec3& d1, const Vec3& d2, const Vec3& d3)
-{
-  const Vec3 a1 = sub(p1, p0), a2 = sub(p2, p0), a3 = sub(p3, p0);
-  const Vec3 b1 = sub(d1, d0), b2 = sub(d2, d0), b3 = sub(d3, d0);
-  auto det = [](const Vec3& x, const Vec3& y, const Vec3& z) { return dot(x, cross(y, z)); };
-  return {{ det(b1, b2, b3),
-            det(a1, b2, b3) + det(b1, a2, b3) + det(b1, b2, a3),
-            det(b1, a2, a3) + det(a1, b2, a3) + det(a1, a2, b3),
-            det(a1, a2, a3) }};
-}
-
-/// The first λ > 0 at which a positive tet moving along (d0, …, d3) degenerates, +∞ if never.
-inline double critical_step_tet(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3,
-                                const Vec3& d0, const Vec3& d1, const Vec3& d2, const Vec3& d3)
-{
-  const std::array<double, 4> c = tet_volume_cubic(p0, p1, p2, p3, d0, d1, d2, d3);
-  return smallest_positive_root(c[0], c[1], c[2], c[3]);
-}
 
 /// What one iteration of the volumetric flow did.
 struct Volume_iteration
@@ -194,190 +175,6 @@ private:
   std::vector<int> m_order;
 };
 
-/// The degrees of freedom: an interior vertex moves in space (3), a border
-/// vertex in the tangent plane of the sphere at its point (2).
-class Volume_dofs
-{
-public:
-  /// `fixed_border`: the border vertices do not move (no dofs).
-  Volume_dofs(const std::vector<char>& on_border, bool fixed_border)
-    : m_offset(on_border.size()), m_border(on_border), m_fixed(fixed_border)
-  {
-    for(std::size_t v = 0; v < on_border.size(); ++v) {
-      m_offset[v] = m_n;
-      m_n += on_border[v] ? (fixed_border ? 0 : 2) : 3;
-    }
-    m_frame.resize(on_border.size());
-  }
-  int size() const { return m_n; }
-  /// Tangent frames at the current border points.
-  void update_frames(const std::vector<Vec3>& x)
-  {
-    for(std::size_t v = 0; v < x.size(); ++v) {
-      if(!m_border[v]) continue;
-      const Vec3 n = normalized(x[v]);
-      const Vec3 a = std::abs(n[0]) < 0.6 ? Vec3{{ 1, 0, 0 }} : Vec3{{ 0, 1, 0 }};
-      const Vec3 t1 = normalized(cross(n, a));
-      m_frame[v] = {{ t1, cross(n, t1) }};
-    }
-  }
-  /// Vertex displacements of the dof vector s.
-  void expand(const Eigen::VectorXd& s, std::vector<Vec3>& d) const
-  {
-    d.resize(m_offset.size());
-    for(std::size_t v = 0; v < m_offset.size(); ++v) {
-      const int o = m_offset[v];
-      if(m_border[v] && m_fixed) {
-        d[v] = {{ 0, 0, 0 }};
-      } else if(m_border[v]) {
-        const Vec3& a = m_frame[v][0];
-        const Vec3& b = m_frame[v][1];
-        d[v] = {{ s[o] * a[0] + s[o + 1] * b[0], s[o] * a[1] + s[o + 1] * b[1], s[o] * a[2] + s[o + 1] * b[2] }};
-      } else {
-        d[v] = {{ s[o], s[o + 1], s[o + 2] }};
-      }
-    }
-  }
-  /// The dof components of per-vertex vectors (the transpose of expand).
-  void restrict(const std::vector<Vec3>& g, Eigen::VectorXd& s) const
-  {
-    s.resize(m_n);
-    for(std::size_t v = 0; v < m_offset.size(); ++v) {
-      const int o = m_offset[v];
-      if(m_border[v] && m_fixed) continue;
-      if(m_border[v]) {
-        s[o] = dot(g[v], m_frame[v][0]);
-        s[o + 1] = dot(g[v], m_frame[v][1]);
-      } else {
-        s[o] = g[v][0]; s[o + 1] = g[v][1]; s[o + 2] = g[v][2];
-      }
-    }
-  }
-  /// The inverse of the block diagonal (3×3 per vertex, projected on the
-  /// frame), with λ·(its trace / size) added: the preconditioner.
-  void block_inverse(const std::vector<std::array<double, 6> >& M, double lambda,
-                     std::vector<std::array<double, 9> >& inv) const
-  {
-    inv.resize(m_offset.size());
-    for(std::size_t v = 0; v < m_offset.size(); ++v) {
-      const std::array<double, 6>& m = M[v]; // xx yy zz xy xz yz
-      if(m_border[v] && m_fixed) continue;
-      Eigen::Matrix3d A;
-      A << m[0], m[3], m[4], m[3], m[1], m[5], m[4], m[5], m[2];
-      if(m_border[v]) {
-        Eigen::Matrix<double, 3, 2> F;
-        for(int k = 0; k < 2; ++k)
-          for(int c = 0; c < 3; ++c) F(c, k) = m_frame[v][std::size_t(k)][std::size_t(c)];
-        Eigen::Matrix2d B = F.transpose() * A * F;
-        const double reg = lambda * (std::max)(B.trace() / 2, 1e-300);
-        B(0, 0) += reg; B(1, 1) += reg;
-        const Eigen::Matrix2d Bi = B.inverse();
-        inv[v] = {{ Bi(0, 0), Bi(0, 1), Bi(1, 1), 0, 0, 0, 0, 0, 0 }};
-      } else {
-        const double reg = lambda * (std::max)(A.trace() / 3, 1e-300);
-        A(0, 0) += reg; A(1, 1) += reg; A(2, 2) += reg;
-        const Eigen::Matrix3d Ai = A.inverse();
-        for(int i = 0; i < 3; ++i)
-          for(int j = 0; j < 3; ++j) inv[v][std::size_t(3 * i + j)] = Ai(i, j);
-      }
-    }
-  }
-  void apply_block(const std::vector<std::array<double, 9> >& inv, const Eigen::VectorXd& r, Eigen::VectorXd& z) const
-  {
-    z.resize(m_n);
-    apply_block(inv, r, z, 0, m_offset.size());
-  }
-  /// The same on the vertices [begin, end) (z already sized).
-  void apply_block(const std::vector<std::array<double, 9> >& inv, const Eigen::VectorXd& r, Eigen::VectorXd& z,
-                   std::size_t begin, std::size_t end) const
-  {
-    for(std::size_t v = begin; v < end; ++v) {
-      const int o = m_offset[v];
-      const std::array<double, 9>& a = inv[v];
-      if(m_border[v] && m_fixed) continue;
-      if(m_border[v]) {
-        z[o] = a[0] * r[o] + a[1] * r[o + 1];
-        z[o + 1] = a[1] * r[o] + a[2] * r[o + 1];
-      } else {
-        for(int i = 0; i < 3; ++i) z[o + i] = a[std::size_t(3 * i)] * r[o] + a[std::size_t(3 * i + 1)] * r[o + 1] + a[std::size_t(3 * i + 2)] * r[o + 2];
-      }
-    }
-  }
-  /// Projected block diagonal entries times λ (the regularisation added to H).
-  void apply_regularization(const std::vector<std::array<double, 6> >& M, double lambda, const Eigen::VectorXd& s,
-                            Eigen::VectorXd& y) const
-  {
-    for(std::size_t v = 0; v < m_offset.size(); ++v) {
-      const int o = m_offset[v];
-      const std::array<double, 6>& m = M[v];
-      const double tr = m[0] + m[1] + m[2];
-      if(m_border[v] && m_fixed) continue;
-      if(m_border[v]) {
-        // trace of FᵀAF ≈ tr(A) − nᵀAn; the scale matters, not the exact value
-        const double reg = lambda * tr / 3;
-        y[o] += reg * s[o]; y[o + 1] += reg * s[o + 1];
-      } else {
-        const double reg = lambda * tr / 3;
-        y[o] += reg * s[o]; y[o + 1] += reg * s[o + 1]; y[o + 2] += reg * s[o + 2];
-      }
-    }
-  }
-  bool on_border(std::size_t v) const { return m_border[v] != 0; }
-  /// The first dof of vertex v and how many it has (0, 2 or 3); `c`
-  /// receives the dof components of the ambient vector g.
-  int components(std::size_t v, const Vec3& g, double c[3]) const
-  {
-    if(m_border[v] && m_fixed) return 0;
-    if(m_border[v]) {
-      c[0] = dot(g, m_frame[v][0]);
-      c[1] = dot(g, m_frame[v][1]);
-      return 2;
-    }
-    c[0] = g[0]; c[1] = g[1]; c[2] = g[2];
-    return 3;
-  }
-  int offset(std::size_t v) const { return m_offset[v]; }
-  /// The ambient vector of the dof components c of vertex v (expand for one vertex).
-  Vec3 ambient(std::size_t v, const double* c) const
-  {
-    if(m_border[v] && m_fixed) return {{ 0, 0, 0 }};
-    if(!m_border[v]) return {{ c[0], c[1], c[2] }};
-    const Vec3& a = m_frame[v][0];
-    const Vec3& b = m_frame[v][1];
-    return {{ c[0] * a[0] + c[1] * b[0], c[0] * a[1] + c[1] * b[1], c[0] * a[2] + c[1] * b[2] }};
-  }
-  /// The first dof of vertex v, or the number of dofs for v = the number of vertices.
-  int offset_or_size(std::size_t v) const { return v < m_offset.size() ? m_offset[v] : m_n; }
-
-private:
-  std::vector<int> m_offset;
-  std::vector<char> m_border;
-  std::vector<std::array<Vec3, 2> > m_frame;
-  bool m_fixed = false;
-  int m_n = 0;
-};
-
-/// Border triangles that the exact predicate does not find positive seen
-/// from the centre: orientation(O, a, b, c) ≠ POSITIVE.
-inline std::size_t count_bad_border_faces(const std::vector<Vec3>& x, const std::vector<std::array<int, 3> >& faces)
-{
-  std::size_t n = 0;
-  const Vec3 o = {{ 0, 0, 0 }};
-  for(const auto& f : faces)
-    if(exact_tet_orientation(o, x[std::size_t(f[0])], x[std::size_t(f[1])], x[std::size_t(f[2])]) != POSITIVE) ++n;
-  return n;
-}
-
-/// Six times the signed volumes of all tets (doubles).
-inline void tet_dets(const std::vector<Vec3>& x, const std::vector<Tet>& tets, std::vector<double>& u)
-{
-  u.resize(tets.size());
-  for(std::size_t t = 0; t < tets.size(); ++t) {
-    const Tet& k = tets[t];
-    u[t] = tet_det(x[std::size_t(k[0])], x[std::size_t(k[1])], x[std::size_t(k[2])], x[std::size_t(k[3])]);
-  }
-}
-
 /// The volumetric flow's stop test on the plateau: the relative progress
 /// (E_prev − E)/(E − 2) below `plateau` for `plateau_window` iterations in
 /// a row (the surface flows' `Flow_stopping` compares over a window instead).
@@ -414,7 +211,7 @@ public:
     : m_x(x), m_tets(tets), m_on_border(on_border), m_border_faces(border_faces), m_S(S),
       m_energy(target, std::move(sum_order)),
       m_dofs(on_border, false), m_stopping(S), m_grad(tets.size()), m_gv(x.size()), m_x_trial(x.size()), m_M(x.size()),
-      m_threads(volume_flow_threads(S.threads, tets.size()))
+      m_threads(volume_flow_threads(S.threads, tets.size())), m_coarse(S.coarse_aggregate)
   {
     // Every vertex's corners (4t + j), in increasing t: the per-vertex sums
     // then add the tets' terms in one order whatever the number of threads.
@@ -444,15 +241,15 @@ public:
   /// coarse assembly is right); false without a coarse level.
   bool coarse_products(const Eigen::VectorXd& ec, Eigen::VectorXd& by_matrix, Eigen::VectorXd& by_products)
   {
-    if(m_aggregates == 0 || ec.size() != Eigen::Index(3 * m_aggregates)) return false;
-    by_matrix = m_Hc.selfadjointView<Eigen::Lower>() * ec;
+    if(m_coarse.aggregates() == 0 || ec.size() != Eigen::Index(3 * m_coarse.aggregates())) return false;
+    by_matrix = m_coarse.product(ec);
     Eigen::VectorXd s = Eigen::VectorXd::Zero(m_dofs.size()), hs;
-    coarse_prolong_add(ec, s);
+    m_coarse.prolong_add(m_dofs, ec, s, m_threads);
     apply(s, hs);
-    coarse_restrict(hs, by_products);
+    m_coarse.restrict(m_dofs, hs, by_products, m_threads);
     return true;
   }
-  std::size_t aggregates() const { return m_aggregates; }
+  std::size_t aggregates() const { return m_coarse.aggregates(); }
 
   bool start(Flow_outcome&)
   {
@@ -697,139 +494,6 @@ private:
     m_factor_pass = m_pass;
   }
 
-  /// The coarse matrix Pᵀ H P (P: an aggregate's translation e moves its
-  /// vertices by e, tangentially on the border), factorised.
-  void coarse_factorize()
-  {
-    const std::size_t k = m_S.coarse_aggregate;
-    if(m_aggregates == 0) coarse_pattern();
-    std::fill(m_coarse_blocks.begin(), m_coarse_blocks.end(), std::array<double, 9>{{ 0, 0, 0, 0, 0, 0, 0, 0, 0 }});
-    for(std::size_t t = 0; t < m_tets.size(); ++t) {
-      const Tet& q = m_tets[t];
-      // The tet's projected corner gradients, summed per aggregate.
-      std::size_t agg[4];
-      Vec3 h[4];
-      int n = 0;
-      for(int j = 0; j < 4; ++j) {
-        const std::size_t v = std::size_t(q[std::size_t(j)]);
-        double c[3];
-        if(m_dofs.components(v, m_grad[t][std::size_t(j)], c) == 0) continue;
-        const Vec3 g = m_dofs.ambient(v, c);
-        const std::size_t a = v / k;
-        int i = 0;
-        while(i < n && agg[i] != a) ++i;
-        if(i == n) { agg[n] = a; h[n] = {{ 0, 0, 0 }}; ++n; }
-        for(std::size_t c3 = 0; c3 < 3; ++c3) h[i][c3] += g[c3];
-      }
-      for(int i = 0; i < n; ++i)
-        for(int l = 0; l < n; ++l) {
-          if(agg[i] < agg[l]) continue;
-          std::array<double, 9>& B = m_coarse_blocks[coarse_block(agg[i], agg[l])];
-          for(std::size_t c = 0; c < 3; ++c)
-            for(std::size_t d = 0; d < 3; ++d) B[3 * c + d] += m_w[t] * h[i][c] * h[l][d];
-        }
-    }
-    // The damping: per vertex reg·FFᵀ (border: the tangent projector) or reg·I.
-    for(std::size_t v = 0; v < m_x.size(); ++v) {
-      const double reg = m_lambda * (m_M[v][0] + m_M[v][1] + m_M[v][2]) / 3;
-      std::array<double, 9>& B = m_coarse_blocks[coarse_block(v / k, v / k)];
-      for(std::size_t d = 0; d < 3; ++d) {
-        Vec3 u = {{ 0, 0, 0 }};
-        u[d] = 1;
-        double cc[3];
-        m_dofs.components(v, u, cc);
-        const Vec3 fu = m_dofs.ambient(v, cc);
-        for(std::size_t c = 0; c < 3; ++c) B[3 * c + d] += reg * fu[c];
-      }
-    }
-    m_coarse_triplets.clear();
-    for(std::size_t a = 0; a < m_aggregates; ++a)
-      for(std::size_t i = m_coarse_start[a]; i < m_coarse_start[a + 1]; ++i) {
-        const std::size_t b = m_coarse_col[i];
-        for(std::size_t c = 0; c < 3; ++c)
-          for(std::size_t d = 0; d < 3; ++d)
-            if(a > b || c >= d) m_coarse_triplets.emplace_back(int(3 * a + c), int(3 * b + d), m_coarse_blocks[i][3 * c + d]);
-      }
-    const int n = int(3 * m_aggregates);
-    m_Hc.resize(n, n);
-    m_Hc.setFromTriplets(m_coarse_triplets.begin(), m_coarse_triplets.end());
-    if(!m_coarse_analyzed) { m_coarse_factor.analyzePattern(m_Hc); m_coarse_analyzed = true; }
-    m_coarse_factor.factorize(m_Hc);
-    m_coarse_ok = m_coarse_factor.info() == Eigen::Success;
-  }
-
-  /// The aggregates' pairs (a ≥ b) that share a tet, per a in increasing b.
-  void coarse_pattern()
-  {
-    const std::size_t k = m_S.coarse_aggregate;
-    m_aggregates = (m_x.size() + k - 1) / k;
-    std::vector<std::pair<std::size_t, std::size_t> > pairs;
-    for(std::size_t a = 0; a < m_aggregates; ++a) pairs.emplace_back(a, a);
-    for(const Tet& q : m_tets)
-      for(std::size_t i = 0; i < 4; ++i)
-        for(std::size_t l = 0; l < 4; ++l) {
-          const std::size_t a = std::size_t(q[i]) / k, b = std::size_t(q[l]) / k;
-          if(a > b) pairs.emplace_back(a, b);
-        }
-    std::sort(pairs.begin(), pairs.end());
-    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-    m_coarse_start.assign(m_aggregates + 1, 0);
-    m_coarse_col.resize(pairs.size());
-    for(std::size_t i = 0; i < pairs.size(); ++i) {
-      ++m_coarse_start[pairs[i].first + 1];
-      m_coarse_col[i] = pairs[i].second;
-    }
-    for(std::size_t a = 0; a < m_aggregates; ++a) m_coarse_start[a + 1] += m_coarse_start[a];
-    m_coarse_blocks.resize(pairs.size());
-  }
-
-  std::size_t coarse_block(std::size_t a, std::size_t b) const
-  {
-    const auto first = m_coarse_col.begin() + std::ptrdiff_t(m_coarse_start[a]);
-    const auto last = m_coarse_col.begin() + std::ptrdiff_t(m_coarse_start[a + 1]);
-    return std::size_t(std::lower_bound(first, last, b) - m_coarse_col.begin());
-  }
-
-  /// rc = Pᵀ r: per aggregate the sum of its vertices' ambient vectors.
-  void coarse_restrict(const Eigen::VectorXd& r, Eigen::VectorXd& rc) const
-  {
-    const std::size_t k = m_S.coarse_aggregate;
-    rc.resize(Eigen::Index(3 * m_aggregates));
-    parallel_ranges(m_aggregates, m_threads, [&](std::size_t begin, std::size_t end, std::size_t) {
-      for(std::size_t a = begin; a < end; ++a) {
-        Vec3 sum = {{ 0, 0, 0 }};
-        for(std::size_t v = a * k; v < (std::min)(m_x.size(), (a + 1) * k); ++v) {
-          const Vec3 g = m_dofs.ambient(v, r.data() + m_dofs.offset(v));
-          sum[0] += g[0]; sum[1] += g[1]; sum[2] += g[2];
-        }
-        for(std::size_t c = 0; c < 3; ++c) rc[Eigen::Index(3 * a + c)] = sum[c];
-      }
-    });
-  }
-
-  /// z += P ec: every vertex moves by its aggregate's translation (tangentially on the border).
-  void coarse_prolong_add(const Eigen::VectorXd& ec, Eigen::VectorXd& z) const
-  {
-    const std::size_t k = m_S.coarse_aggregate;
-    parallel_ranges(m_x.size(), m_threads, [&](std::size_t begin, std::size_t end, std::size_t) {
-      for(std::size_t v = begin; v < end; ++v) {
-        const std::size_t a = v / k;
-        const Vec3 e = {{ ec[Eigen::Index(3 * a)], ec[Eigen::Index(3 * a + 1)], ec[Eigen::Index(3 * a + 2)] }};
-        double c[3];
-        const int m = m_dofs.components(v, e, c);
-        for(int i = 0; i < m; ++i) z[m_dofs.offset(v) + i] += c[i];
-      }
-    });
-  }
-
-  /// z += P (Pᵀ H P)⁻¹ Pᵀ r.
-  void coarse_correct(const Eigen::VectorXd& r, Eigen::VectorXd& z)
-  {
-    coarse_restrict(r, m_rc);
-    m_ec = m_coarse_factor.solve(m_rc);
-    coarse_prolong_add(m_ec, z);
-  }
-
   /// Eisenstat and Walker's choice 2 (γ = 0.9, α = 2) with its safeguard,
   /// between cg_tolerance and 0.5.
   void forcing()
@@ -852,7 +516,7 @@ private:
   {
     m_dofs.block_inverse(m_M, m_lambda, m_Minv);
     if(m_S.cholesky_every > 0 && (m_pass - m_factor_pass >= m_S.cholesky_every || !m_factored)) factorize();
-    if(m_S.coarse_aggregate > 0 && !m_factored) coarse_factorize();
+    if(m_S.coarse_aggregate > 0 && !m_factored) m_coarse.factorize(m_tets, m_dofs, m_grad, m_w, m_M, m_lambda);
     // The vector operations in parallel, the dot products per fixed block
     // of vertices (their dofs are contiguous): they do not depend on the
     // number of threads.
@@ -878,7 +542,7 @@ private:
         parallel_ranges(V, m_threads, [&](std::size_t vb, std::size_t ve, std::size_t) {
           m_dofs.apply_block(m_Minv, m_r, m_z, vb, ve);
         });
-        if(m_coarse_ok) coarse_correct(m_r, m_z);
+        if(m_coarse.ok()) m_coarse.correct(m_dofs, m_r, m_z, m_threads);
       }
       return blocked_sums<2>(V, m_threads, [&](std::size_t vb, std::size_t ve, std::array<double, 2>& a) {
         const auto d = dofs(vb, ve);
@@ -934,15 +598,7 @@ private:
   std::vector<std::size_t> m_corner_start; // per vertex, into m_corners
   std::vector<int> m_corners;              // 4t + j: corner j of tet t
   double m_eta = 0.5, m_g_prev = 0;        // the forcing term, the last gradient's norm
-  // The coarse correction: aggregates of consecutive vertices, 3 dofs each.
-  std::size_t m_aggregates = 0;
-  std::vector<Eigen::Triplet<double> > m_coarse_triplets;
-  std::vector<std::size_t> m_coarse_start, m_coarse_col; // the pattern's blocks, per aggregate
-  std::vector<std::array<double, 9> > m_coarse_blocks;
-  Sparse_matrix m_Hc;
-  Default_spd_solver m_coarse_factor;
-  bool m_coarse_analyzed = false, m_coarse_ok = false;
-  Eigen::VectorXd m_rc, m_ec;
+  Volume_coarse_level m_coarse; // the two-level preconditioner's coarse space
   Eigen::VectorXd m_g, m_s, m_r, m_z, m_p, m_q;
   double m_E = 0, m_E_trial = 0;
   double m_lambda = 1e-3; // Levenberg–Marquardt damping
