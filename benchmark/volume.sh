@@ -8,7 +8,9 @@
 #   DLF=build/examples/dlf MESHES=build/data/meshes bash benchmark/volume.sh [TETS...]
 #
 # TETS: the --tets targets (default 20000). MESHLIST overrides the meshes,
-# TETRAHEDRALIZE adds options to `dlf tetrahedralize` (e.g. --facet-ratio 1).
+# TETRAHEDRALIZE adds options to `dlf tetrahedralize` (e.g. --facet-ratio 1),
+# VOLUME to `dlf volume` (e.g. --mode paper; its outputs then get the
+# suffix TAG, default "-" and the options without spaces or dashes).
 set -u
 if [ "${DOC:-0}" = 1 ]; then
   root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -29,6 +31,8 @@ MESHES=${MESHES:-build/data/meshes}
 WORK=${WORK:-volume-work}
 MESHLIST=${MESHLIST:-"sphere bunny00 bear hand homer blobby bull triceratops diplodocus armadillo cactus dino tripod"}
 SIZES=${*:-20000}
+VOLUME=${VOLUME:-}
+TAG=${TAG:-$( [ -n "$VOLUME" ] && echo "-$(echo "$VOLUME" | tr -d ' -')" )}
 mkdir -p "$WORK"
 echo "| mesh | tets (target) | vertices | tets | border vertices | tets with 4 border vertices | start: Tutte folds | untangle it. | status | stop | it. | D_vol | mean abs log r | max abs log r | inverted (exact) | border not star-shaped | seconds | peak MiB |"
 echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
@@ -38,14 +42,16 @@ for n in $SIZES; do
     if [ ! -f "$mesh" ]; then
       "$DLF" tetrahedralize "$MESHES/$m.off" -o "$mesh" --tets "$n" ${TETRAHEDRALIZE:-} -q || { echo "| $m | $n | tetrahedralize failed |"; continue; }
     fi
-    /usr/bin/time -f "%e %M" -o "$WORK/time.txt" "$DLF" volume "$mesh" -o "$WORK/$m-$n-ball.mesh" \
-      --report "$WORK/$m-$n.json" -q 2> "$WORK/$m-$n.err"
+    out="$WORK/$m-$n$TAG"
+    # shellcheck disable=SC2086 # VOLUME: several options
+    /usr/bin/time -f "%e %M" -o "$WORK/time.txt" "$DLF" volume "$mesh" -o "$out-ball.mesh" \
+      --report "$out.json" $VOLUME -q 2> "$out.err"
     read -r secs kb < <(tail -1 "$WORK/time.txt")
-    if [ ! -s "$WORK/$m-$n.json" ]; then
-      echo "| $m | $n | error: $(tail -1 "$WORK/$m-$n.err" | cut -c1-160) | | | | | | | | | | | | | | $secs | $((kb / 1024)) |"
+    if [ ! -s "$out.json" ]; then
+      echo "| $m | $n | error: $(tail -1 "$out.err" | cut -c1-160) | | | | | | | | | | | | | | $secs | $((kb / 1024)) |"
       continue
     fi
-    /usr/bin/python3 - "$WORK/$m-$n.json" "$m" "$n" "$secs" "$kb" "$mesh" <<'PY'
+    /usr/bin/python3 - "$out.json" "$m" "$n" "$secs" "$kb" "$mesh" <<'PY'
 import collections, json, sys
 r = json.load(open(sys.argv[1])); s = r["start"]; f = r["final"]
 # The tets whose four corners lie on the border (a border vertex: one of a

@@ -51,6 +51,8 @@ const char* volume_help =
   "  dlf volume bunny.mesh -o bunny_ball.mesh --report bunny.json --svg bunny.svg\n"
   "  dlf volume bunny.mesh --roi-ball 0 0 0 0.03 --factor 4 --report roi.json\n"
   "      measure control: the tetrahedra whose centroid lies in the ball get 4 times their share\n"
+  "  dlf volume bunny.mesh --mode paper --report paper.json\n"
+  "      the paper's flow (Poisson step of the vertex volumes, P1 stiffness), same start and certification\n"
   "\n"
   "Exit codes: 0 converged; 3 a valid, fold-free map short of the tolerance;\n"
   "2 the flow failed (no certified start); 1 bad input.\n";
@@ -114,7 +116,7 @@ const char* stop_name(SMP::Discrete_lie_flow_stop_reason r)
 
 int volume_command(const std::vector<std::string>& args)
 {
-  std::string output, report_path, svg_path, density_file, border_start = "tutte";
+  std::string output, report_path, svg_path, density_file, border_start = "tutte", mode = "certified";
   SMP::Discrete_lie_flow_volume_options options;
   po::options_description visible("Options");
   visible.add_options()
@@ -123,6 +125,12 @@ int volume_command(const std::vector<std::string>& args)
     ("report", po::value<std::string>(&report_path)->value_name("R.json"), "JSON report")
     ("svg", po::value<std::string>(&svg_path)->value_name("VIEW.svg"),
      "the ball's border from +z and -z, each triangle coloured by the log volume ratio of its tetrahedron")
+    ("mode", po::value<std::string>(&mode)->value_name("certified|paper"),
+     "the flow from the certified start: certified (default; Gauss-Newton descent of D_vol) or paper (the paper's "
+     "Poisson step of the vertex volumes' mismatch with the P1 stiffness of the current tetrahedra, mu times the "
+     "critical step; every step certified by the exact predicate too; the conjugate-gradient options do not apply)")
+    ("no-collapse-guard", "paper mode: the paper's step as written, without the collapse guard (a tet below its "
+     "target that the velocities would flatten gets its volume rate projected to zero)")
     ("tolerance", po::value<double>(&options.tolerance), "stop when D_vol - 2 <= this (default 0.01) ...")
     ("share-tolerance", po::value<double>(&options.share_tolerance),
      "... and, with a density, the tetrahedra of every density value within this of their share, relative "
@@ -184,8 +192,11 @@ int volume_command(const std::vector<std::string>& args)
   if(has_roi && !density_file.empty()) throw Cli_error("--density and --roi-ball exclude each other");
   options.record_history = vm.count("history") != 0;
   options.star_shaped_border = vm.count("star-shaped") != 0;
+  options.paper_collapse_guard = vm.count("no-collapse-guard") == 0;
   options.cg_forcing = vm.count("fixed-cg-tolerance") == 0;
   if(options.threads < 0) throw Cli_error("--threads must be 0 (automatic) or positive");
+  if(mode == "paper") options.mode = SMP::Discrete_lie_flow_mode::PAPER;
+  else if(mode != "certified") throw Cli_error("--mode takes certified or paper");
   if(border_start == "conformal") options.border.sphere.start = SMP::Discrete_lie_flow_sphere_start::CONFORMAL;
   else if(border_start != "tutte") throw Cli_error("--border-start takes tutte or conformal");
   Output_files files;
@@ -316,7 +327,7 @@ int volume_command(const std::vector<std::string>& args)
     if(has_roi)
       j["roi"] = { { "ball", roi.ball }, { "factor", roi.factor }, { "target_share", roi_target },
                    { "achieved_share", roi_achieved }, { "relative_error", roi_achieved / roi_target - 1 } };
-    j["options"] = { { "tolerance", options.tolerance }, { "share_tolerance", options.share_tolerance }, { "max_iterations", options.max_iterations }, { "mu", options.mu },
+    j["options"] = { { "mode", mode }, { "collapse_guard", options.paper_collapse_guard }, { "tolerance", options.tolerance }, { "share_tolerance", options.share_tolerance }, { "max_iterations", options.max_iterations }, { "mu", options.mu },
                        { "border_start", border_start }, { "border_max_iterations", options.border.max_iterations },
                        { "untangle_iterations", options.untangle_max_iterations },
                        { "coarse_aggregate", options.coarse_aggregate }, { "cg_forcing", options.cg_forcing },
@@ -328,7 +339,7 @@ int volume_command(const std::vector<std::string>& args)
     if(options.record_history) {
       json h = json::array();
       for(const auto& I : R.history)
-        h.push_back({ { "iteration", I.iteration }, { "step", I.step }, { "critical_step", I.critical_step },
+        h.push_back({ { "iteration", I.iteration }, { "step", I.step }, { "critical_step", I.critical_step }, { "limiting_tet", I.limiting_tet },
                       { "d_vol", I.d_vol }, { "cg_iterations", I.cg_iterations }, { "seconds", I.seconds } });
       j["history"] = h;
     }

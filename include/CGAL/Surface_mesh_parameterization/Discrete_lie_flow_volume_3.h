@@ -11,6 +11,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_paper_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_start.h>
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
@@ -31,6 +32,20 @@ namespace Surface_mesh_parameterization {
 /// Settings of `Discrete_lie_flow_volume_parameterizer_3`.
 struct Discrete_lie_flow_volume_options
 {
+  /// Which flow moves the vertices from the certified start: `CERTIFIED`
+  /// (the default) descends D_vol by Gauss–Newton steps; `PAPER` runs the
+  /// paper's flow as far as its formulas reach in 3D (the Poisson potential
+  /// of the vertex volumes' mismatch with the P1 stiffness of the current
+  /// tets, volume-weighted vertex gradients, μ times the critical step;
+  /// doc/volume.md, "Paper mode"), every step still certified by the exact
+  /// predicate; it uses neither the conjugate gradients' settings nor
+  /// `cholesky_every`. `LITERAL` is refused (`ERROR_WRONG_PARAMETER`).
+  Discrete_lie_flow_mode mode = Discrete_lie_flow_mode::CERTIFIED;
+  /// Paper mode: before each step, a tet already below its target that the
+  /// velocities would flatten gets its volume rate projected to zero (the
+  /// planar paper mode's collapse guard; false: the paper's step as written,
+  /// which flattens tets of four border corners within a few steps).
+  bool paper_collapse_guard = true;
   double tolerance = 0.01;          ///< stop when D_vol − 2 ≤ tolerance
   /// Iteration cap of the flow (the plateau rule ends a flow that no longer
   /// gains well before it; doc/volume.md).
@@ -154,6 +169,7 @@ inline Volume_flow_settings volume_flow_settings(const Discrete_lie_flow_volume_
   S.cg_forcing = O.cg_forcing;
   S.star_shaped_border = O.star_shaped_border;
   S.share_tolerance = O.share_tolerance;
+  S.paper_collapse_guard = O.paper_collapse_guard;
   return S;
 }
 
@@ -184,7 +200,9 @@ inline Volume_flow_settings volume_flow_settings(const Discrete_lie_flow_volume_
 /// after the step. Every step is at most μ times the smallest positive
 /// root of the tets' cubics det(p + λv), then halved until the energy drops
 /// and every tet is positive by the exact predicate: the result is never
-/// folded.
+/// folded. The paper mode (`options().mode = Discrete_lie_flow_mode::PAPER`)
+/// replaces the direction by the paper's Poisson step, from the same start
+/// and with the same certification.
 ///
 /// \tparam SolverTraits_ `CGAL::Eigen_solver_traits<S>` with `S` an Eigen
 ///   sparse SPD solver with `analyzePattern()`/`factorize()` for Tutte's system of the start (the border's spherical map uses its own default).
@@ -282,6 +300,8 @@ private:
     const Discrete_lie_flow_volume_options& O = m_options;
     if(!(O.mu > 0 && O.mu < 1)) return fail(ERROR_WRONG_PARAMETER, "mu must lie in (0, 1)");
     if(!(O.tolerance > 0)) return fail(ERROR_WRONG_PARAMETER, "the tolerance must be positive");
+    if(O.mode == Discrete_lie_flow_mode::LITERAL)
+      return fail(ERROR_WRONG_PARAMETER, "the volumetric flow has a certified and a paper mode, no literal one");
     R.vertices = xyz.size();
     R.tets = tets.size();
     D::Ball_topology topo;
@@ -353,8 +373,11 @@ private:
     std::vector<double> flow_target = target;
     D::Volume_flow_outcome out;
     for(int round = 0;; ++round) {
-      const D::Volume_flow_outcome o = D::run_volume_flow(x, tets, topo.on_border, topo.border_faces, flow_target, S,
-                                                          O.record_history ? &R.history : nullptr);
+      std::vector<D::Volume_iteration>* history = O.record_history ? &R.history : nullptr;
+      const D::Volume_flow_outcome o =
+        O.mode == Discrete_lie_flow_mode::PAPER
+          ? D::run_volume_paper_flow(x, tets, topo.on_border, topo.border_faces, flow_target, S, history)
+          : D::run_volume_flow(x, tets, topo.on_border, topo.border_faces, flow_target, S, history);
       out.iterations += o.iterations;
       out.rejected_by_exact_check += o.rejected_by_exact_check;
       out.cg_iterations += o.cg_iterations;

@@ -47,6 +47,7 @@ struct Volume_iteration
   std::size_t iteration = 0;
   double step = 0;           ///< the accepted step λ (1: the full Gauss–Newton step)
   double critical_step = 0;  ///< the smallest critical step of the direction
+  int limiting_tet = -1;     ///< the tet (caller's index) of that step, −1 if none
   double d_vol = 0;          ///< D_vol after the step (with ε > 0: the regularised energy)
   double epsilon = 0;        ///< the untangling's ε, 0 in the certified flow
   bool untangling = false;   ///< an iteration of the start's untangling (its polish at ε = 0 too)
@@ -87,6 +88,9 @@ struct Volume_flow_settings
   /// Threads of the per-tet and per-vertex passes (0: automatic,
   /// volume_flow_threads()); the result does not depend on it.
   int threads = 0;
+  /// Paper mode: the collapse guard (volume_paper_flow.h); false: the
+  /// paper's step as written.
+  bool paper_collapse_guard = true;
   std::function<bool(const Volume_iteration&)> callback; ///< false: stop (INTERRUPTED)
   /// Measure control: the level (0, 1, ...) of every tet (empty: none);
   /// converged also needs every level's share of the volume within
@@ -714,6 +718,7 @@ inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vect
       I.iteration = info.iteration;
       I.step = info.step;
       I.critical_step = info.critical_step;
+      I.limiting_tet = info.limiting_face >= 0 ? tet_order[std::size_t(info.limiting_face)] : -1;
       I.d_vol = info.d_area;
       I.cg_iterations = flow.last_cg_iterations();
       I.seconds = info.seconds;
