@@ -796,6 +796,14 @@ check "volume -v: a line per flow iteration, as many as reported" equals \
 check "volume --cholesky-every 1: converged, one conjugate-gradient step per iteration (the factorisation is the matrix solved)" \
   equals "$(json_get vol_chol.json "" stop_reason) $(json_get vol_chol.json counters cg_iterations)" \
   "converged $(json_get vol_chol.json "" iterations)"
+"$DLF" volume vol_sphere.mesh --mode paper -o vol_paper.mesh --report vol_paper.json -q
+check "volume --mode paper: status ok, 0 inverted tets, the mode reported, no conjugate gradients" equals \
+  "$(json_get vol_paper.json "" status) $(json_get vol_paper.json final inverted_tets) $(json_get vol_paper.json options mode) $(json_get vol_paper.json counters cg_iterations)" \
+  "ok 0 paper 0"
+check "volume --mode paper: D_vol below the certified start's" \
+  number_is "$(json_get vol_paper.json final d_vol)" "<" "$(json_get vol_paper.json start d_vol)"
+"$DLF" volume vol_sphere.mesh --mode literal 2> vol_mode.err
+check "volume --mode literal: exit 1, named" equals "$? $(grep -c 'mode takes certified or paper' vol_mode.err)" "1 1"
 "$DLF" volume vol_sphere.mesh --threads 1 -o vol_t1.mesh -q && "$DLF" volume vol_sphere.mesh --threads 2 -o vol_t2.mesh -q
 check "volume --threads 1 and --threads 2: the same points, bit for bit" cmp -s vol_t1.mesh vol_t2.mesh
 check "volume: the report names the flow's threads and preconditioner (automatic: one thread on a small mesh)" equals \

@@ -10,7 +10,8 @@
 // adaptive step μ·(smallest positive root of the tets' cubics det(p + λv)),
 // certified by the exact orientation of every tet. No flips: the paper's
 // Delaunay flips have no fixed-connectivity analogue, the map stays on the
-// caller's tets (doc/volume.md, "Paper mode").
+// caller's tets; the planar paper mode's collapse guard stands in for them
+// where it can (optional; doc/volume.md, "Paper mode").
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_PAPER_FLOW_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_PAPER_FLOW_H
