@@ -138,14 +138,17 @@ public:
     const Sparse_matrix* L = nullptr;
     {
       Scoped_timer timer(out.seconds_assembly);
-      lump_tets_on_vertices(n, m_tets, m_u, m_VO); // 6 vol_t: the scale cancels against V_M's in the solve ...
-      for(double& v : m_VO) v /= 6;                // ... but h's does not: volumes, so that λ = 1 is the full step
+      // In volumes (u_t = 6 vol_t): V_M's scale cancels in the solve, V_Ω's
+      // sets h's, so that λ = 1 is the full first-order correction.
+      lump_tets_on_vertices(n, m_tets, m_u, m_VO);
+      for(double& v : m_VO) v /= 6;
       L = &m_K.assemble(n, [&](const auto& add) { volume_stiffness_contributions(m_x, m_tets, add); });
     }
     std::vector<double> h;
     if(!solve_pinned_poisson(*L, m_VO, m_VM, m_solver, out, h)) return Direction_status::SOLVER_FAILED;
     Scoped_timer timer(out.seconds_step);
-    // Σ_t vol_t ∇h_t = Σ_t Σ_k h_k G_k / 6 over the vertex's tets, divided by Σ_t vol_t.
+    // ∇h_t = Σ_k h_k G_k / u_t, so 6 vol_t ∇h_t = Σ_k h_k G_k: summed over
+    // the vertex's tets and divided by Σ_t u_t, the volume-weighted mean.
     std::fill(m_v.begin(), m_v.end(), Vec3{{ 0, 0, 0 }});
     m_wsum.assign(n, 0.);
     for(std::size_t t = 0; t < m_tets.size(); ++t) {
