@@ -754,6 +754,9 @@ TEST(Volume, CoarseMatrixIsTheGaussNewtonMatrixOnTheAggregates)
     flow.direction(out);
     const std::size_t A = (x.size() + k - 1) / k;
     ASSERT_EQ(flow.aggregates(), A);
+    // Aggregates of one border vertex (k = 1) move only in its tangent
+    // plane: Pᵀ H P is singular there and must still be factorised.
+    EXPECT_TRUE(flow.coarse_factorized()) << "aggregates of " << k;
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> uni(-1, 1);
     for(int trial = 0; trial < 3; ++trial) {

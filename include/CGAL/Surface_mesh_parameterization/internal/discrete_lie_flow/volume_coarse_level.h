@@ -39,7 +39,12 @@ namespace dlf {
 class Volume_coarse_level
 {
 public:
-  explicit Volume_coarse_level(std::size_t aggregate) : m_k(aggregate) {}
+  explicit Volume_coarse_level(std::size_t aggregate) : m_k(aggregate)
+  {
+#ifdef CGAL_DLF_USE_CHOLMOD
+    m_factor.cholmod().print = 0; // a singular Pᵀ H P is handled in factorize(), not an error to print
+#endif
+  }
 
   /// The number of aggregates (0 before the first factorisation).
   std::size_t aggregates() const { return m_aggregates; }
@@ -108,6 +113,20 @@ public:
     if(!m_analyzed) { m_factor.analyzePattern(m_Hc); m_analyzed = true; }
     m_factor.factorize(m_Hc);
     m_ok = m_factor.info() == Eigen::Success;
+    if(!m_ok) {
+      // An aggregate of a few border vertices whose tangent planes miss a
+      // direction (the last, short one; or nearly coplanar normals) makes
+      // P rank-deficient and Pᵀ H P singular. Its null vectors move no
+      // vertex and Pᵀ r has no component along them, so a small shift of
+      // the diagonal leaves the correction P (Pᵀ H P)⁻¹ Pᵀ r as it is.
+      double trace = 0;
+      for(int i = 0; i < n; ++i) trace += m_Hc.coeff(i, i);
+      const double shift = 1e-10 * trace / (std::max)(n, 1);
+      for(int i = 0; i < n; ++i) m_Hc.coeffRef(i, i) += shift;
+      m_factor.factorize(m_Hc);
+      m_ok = m_factor.info() == Eigen::Success;
+      for(int i = 0; i < n; ++i) m_Hc.coeffRef(i, i) -= shift; // product() stays Pᵀ H P
+    }
   }
 
   /// rc = Pᵀ r: per aggregate the sum of its vertices' ambient vectors.

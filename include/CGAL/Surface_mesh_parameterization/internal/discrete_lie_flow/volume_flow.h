@@ -254,6 +254,8 @@ public:
     return true;
   }
   std::size_t aggregates() const { return m_coarse.aggregates(); }
+  /// The coarse matrix's last factorisation succeeded.
+  bool coarse_factorized() const { return m_coarse.ok(); }
 
   bool start(Flow_outcome&)
   {
