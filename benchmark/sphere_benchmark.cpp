@@ -177,11 +177,15 @@ static void face_shapes(const SM& mesh, std::vector<double>& min_angle, std::vec
 }
 
 static bool trace_iterations = false; // --trace
+static std::string start_option;       // --start: empty for the library's default
 
 static json run_sphere(const SM& mesh)
 {
   json j;
   SMP::Discrete_lie_flow_sphere_parameterizer_3<SM> dlf; // the library's defaults
+  if(start_option == "tutte") dlf.options().sphere.start = SMP::Discrete_lie_flow_sphere_start::TUTTE;
+  else if(start_option == "mean-value") dlf.options().sphere.start = SMP::Discrete_lie_flow_sphere_start::MEAN_VALUE;
+  else if(start_option == "conformal") dlf.options().sphere.start = SMP::Discrete_lie_flow_sphere_start::CONFORMAL;
   // The callback only watches: the phases' split (the polish starts once
   // D_area < 2.05, sphere_certified_flow.h) and, with --trace, the faces that
   // limit the steps.
@@ -403,6 +407,7 @@ int main(int argc, char** argv)
        "part.off+mid1,part.off+mid2,oblong.off+mid1,oblong-shuffled.off+mid1,cactus.off+mid1,dino.off+mid1,bull.off+mid1"),
      "comma-separated meshes of the refined section (not counted towards the goals; empty: none)")
     ("list", "print the meshes that would be run, and exit")
+    ("start", po::value<std::string>(&start_option), "the start instead of the library's default: tutte, mean-value or conformal")
     ("trace", "print every iteration: step, critical step, and the shape of the face that limits it")
     ("speed-mesh", po::value<std::string>(&speed_mesh)->default_value("bear.off+loop1"),
      "the large mesh whose whole call is held against the 10 s goal")
