@@ -177,11 +177,15 @@ static void face_shapes(const SM& mesh, std::vector<double>& min_angle, std::vec
 }
 
 static bool trace_iterations = false; // --trace
+static std::string start_option;       // --start: empty for the library's default
 
 static json run_sphere(const SM& mesh)
 {
   json j;
   SMP::Discrete_lie_flow_sphere_parameterizer_3<SM> dlf; // the library's defaults
+  if(start_option == "tutte") dlf.options().sphere.start = SMP::Discrete_lie_flow_sphere_start::TUTTE;
+  else if(start_option == "mean-value") dlf.options().sphere.start = SMP::Discrete_lie_flow_sphere_start::MEAN_VALUE;
+  else if(start_option == "conformal") dlf.options().sphere.start = SMP::Discrete_lie_flow_sphere_start::CONFORMAL;
   // The callback only watches: the phases' split (the polish starts once
   // D_area < 2.05, sphere_certified_flow.h) and, with --trace, the faces that
   // limit the steps.
@@ -229,6 +233,8 @@ static json run_sphere(const SM& mesh)
   j["seconds_step"] = R.seconds_step;
   j["iterations"] = R.iterations;
   j["opening_iterations"] = opening_iterations;
+  j["split_vertices_removed"] = R.split_vertices_removed;
+  j["coarse_iterations"] = R.coarse_iterations;
   j["seconds_opening"] = opening_seconds;
   j["stop_reason"] = SMP::discrete_lie_flow_stop_reason_name(R.stop_reason);
   j["initial_attempts"] = R.initial_attempts;
@@ -365,7 +371,10 @@ static void irregular_table(std::ostream& out, const json& rows)
     const std::vector<std::string> missed = m["missed_goals"];
     std::string goals = missed.empty() ? "yes" : "no:";
     for(const std::string& g : missed) goals += " " + g;
-    out << it << " (" << opening << " + " << (it - opening) << ") | " << fmt_time(r["seconds_initial"]) << " | "
+    out << it << " (" << opening << " + " << (it - opening) << ")";
+    // A coarse start (edge-split vertices removed): its flow is in "s initial".
+    if(r.value("split_vertices_removed", 0) > 0) out << "; coarse start: " << std::size_t(r["coarse_iterations"]) << " iterations";
+    out << " | " << fmt_time(r["seconds_initial"]) << " | "
         << fmt_time(opening_s) << " | " << fmt_time(flow - opening_s) << " | " << fmt_time(r["seconds"]) << " | "
         << fmt(double(r["seconds"]) * 1e5 / double(m["F"]), 2) << " | " << fmt(r["final"]["d_area"], 4) << " | "
         << fmt(r["final"]["log_area_mean_abs"], 4) << " | " << inverted << " | " << goals << " |\n";
@@ -403,6 +412,7 @@ int main(int argc, char** argv)
        "part.off+mid1,part.off+mid2,oblong.off+mid1,oblong-shuffled.off+mid1,cactus.off+mid1,dino.off+mid1,bull.off+mid1"),
      "comma-separated meshes of the refined section (not counted towards the goals; empty: none)")
     ("list", "print the meshes that would be run, and exit")
+    ("start", po::value<std::string>(&start_option), "the start instead of the library's default: tutte, mean-value or conformal")
     ("trace", "print every iteration: step, critical step, and the shape of the face that limits it")
     ("speed-mesh", po::value<std::string>(&speed_mesh)->default_value("bear.off+loop1"),
      "the large mesh whose whole call is held against the 10 s goal")

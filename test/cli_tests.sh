@@ -138,6 +138,9 @@ check "sphere: --log-area-tolerance 0 lets d_area alone decide" number_is "$(jso
 "$DLF" sphere "$MESHES/ellipe0.003.off" --start conformal -o sph_conf.obj --report sph_conf.json -q
 check "sphere --start conformal: exit 0, converged, reported" equals \
   "$? $(json_get sph_conf.json "" stop_reason) $(json_get sph_conf.json "" start)" "0 converged conformal"
+"$DLF" sphere "$MESHES/ellipe0.003.off" --start mean-value --report sph_mv.json -q
+check "sphere --start mean-value: exit 0, converged, reported" equals \
+  "$? $(json_get sph_mv.json "" stop_reason) $(json_get sph_mv.json "" start) $(json_get sph_mv.json "" split_vertices_removed)" "0 converged mean-value 0"
 "$DLF" sphere "$MESHES/ellipe0.003.off" --init-map sph_conf.obj --report sph_given.json -q
 check "sphere --init-map: exit 0, started from the given map" equals "$? $(json_get sph_given.json "" start)" "0 given"
 check "sphere --init-map: an earlier result has nothing left to do" number_is "$(json_get sph_given.json "" iterations)" "<=" 1
@@ -510,7 +513,7 @@ expect_error "--threshold outside literal mode" 1 "--threshold applies to --mode
 expect_error "--threshold not positive" 1 "--threshold must be a number > 0" disk "$NEF" --mode literal --threshold 0
 expect_error "--fixed-step not positive" 1 "--fixed-step must be a number > 0" disk "$NEF" --fixed-step -1
 expect_error "sphere --mode unknown" 1 "expected certified, paper or literal" sphere "$MESHES/sphere.off" --mode literall
-expect_error "sphere --start unknown" 1 "expected tutte or conformal" sphere "$MESHES/sphere.off" --start harmonic
+expect_error "sphere --start unknown" 1 "expected tutte, conformal or mean-value" sphere "$MESHES/sphere.off" --start harmonic
 expect_error "sphere --init-map with --start" 1 "--init-map and --start exclude each other" sphere "$MESHES/sphere.off" \
   --init-map sph.obj --start conformal
 expect_error "sphere --init-map of another mesh" 1 "expected the input's faces" sphere "$MESHES/sphere.off" --init-map sph_conf.obj

@@ -101,7 +101,8 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
      "literal mode: stop when ||h_M - h_Omega||^2 < X, vertex area elements in units of their mean")
     ("start", po::value<std::string>(&s.start)->value_name("S")->default_value("tutte"),
      "the initial map: tutte (Tutte's embedding of the punctured mesh, lifted stereographically) or "
-     "conformal (the cotangent-harmonic map instead, the paper's kind of start; refused if it folds)")
+     "conformal (the cotangent-harmonic map instead, the paper's kind of start; refused if it folds) or "
+     "mean-value (Tutte's embedding with Floater's mean-value weights: bijective, keeps straight edges straight)")
     ("init-map", po::value<std::string>(&s.init_map_file)->value_name("SPHERE.obj"),
      "start from this map instead: a mesh with the input's faces, its points scaled onto the unit sphere "
      "(e.g. an earlier dlf sphere output); refused if a face folds")
@@ -154,14 +155,15 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
   if(s.mode != "certified" && s.mode != "paper" && s.mode != "literal")
     throw Cli_error("invalid value '" + s.mode + "' for --mode (expected certified, paper or literal)");
   check_mode_options(vm, s.mode, s.options);
-  if(s.start != "tutte" && s.start != "conformal")
-    throw Cli_error("invalid value '" + s.start + "' for --start (expected tutte or conformal)");
+  if(s.start != "tutte" && s.start != "conformal" && s.start != "mean-value")
+    throw Cli_error("invalid value '" + s.start + "' for --start (expected tutte, conformal or mean-value)");
   if(!s.init_map_file.empty()) {
     if(!vm["start"].defaulted()) throw Cli_error("--init-map and --start exclude each other");
     s.start = "given";
   }
-  s.options.sphere.start = s.start == "conformal" ? SMP::Discrete_lie_flow_sphere_start::CONFORMAL
-                                                  : SMP::Discrete_lie_flow_sphere_start::TUTTE;
+  s.options.sphere.start = s.start == "conformal"    ? SMP::Discrete_lie_flow_sphere_start::CONFORMAL
+                         : s.start == "mean-value" ? SMP::Discrete_lie_flow_sphere_start::MEAN_VALUE
+                                                   : SMP::Discrete_lie_flow_sphere_start::TUTTE;
   s.options.mode = mode_of(s.mode);
   s.options.paper.lump_targets_on_flowing_faces = vm.count("literal-targets") == 0;
   s.options.paper.delaunay_flips = vm.count("no-flips") == 0;
@@ -328,6 +330,8 @@ json sphere_report(const Sphere_settings& s, const Indexed_mesh& input, const Sp
   j["initial"] = ok ? metrics_to_json(R.initial_metrics) : json(nullptr);
   j["final"] = ok ? metrics_to_json(R.final_metrics) : json(nullptr);
   j["puncture_face"] = R.puncture_face;
+  j["split_vertices_removed"] = R.split_vertices_removed;
+  j["coarse_iterations"] = R.coarse_iterations;
   j["rejected_by_exact_check"] = R.rejected_by_exact_check;
   if(s.history_in_report) {
     json h = json::array();

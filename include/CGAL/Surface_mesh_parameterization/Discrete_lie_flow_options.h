@@ -127,6 +127,12 @@ enum class Discrete_lie_flow_sphere_start
   /// correction. Cotangent weights may be negative, so it can fold; it is
   /// then refused with `ERROR_INITIAL_MAP_FOLDED`.
   CONFORMAL,
+  /// Tutte's map with Floater's mean-value weights (positive, so bijective by
+  /// construction like TUTTE) instead of uniform ones: they reproduce linear
+  /// functions, so a vertex lying on a straight 3D edge between two
+  /// neighbours stays between their images, and fans of needles keep their
+  /// shape instead of fattening and compressing their neighbours.
+  MEAN_VALUE,
   /// The caller's map (`Discrete_lie_flow_sphere_parameterizer_3::set_initial_map()`),
   /// certified the same way; reported, not selected by the options.
   GIVEN
@@ -190,12 +196,13 @@ inline const char* discrete_lie_flow_border_name(Discrete_lie_flow_border b)
 }
 
 /// \ingroup PkgDiscreteLieFlowOptions
-/// The name of a spherical start as used in reports (`"tutte"`, `"conformal"`, `"given"`).
+/// The name of a spherical start as used in reports (`"tutte"`, `"conformal"`, `"mean-value"`, `"given"`).
 inline const char* discrete_lie_flow_sphere_start_name(Discrete_lie_flow_sphere_start s)
 {
   switch(s) {
   case Discrete_lie_flow_sphere_start::TUTTE: return "tutte";
   case Discrete_lie_flow_sphere_start::CONFORMAL: return "conformal";
+  case Discrete_lie_flow_sphere_start::MEAN_VALUE: return "mean-value";
   case Discrete_lie_flow_sphere_start::GIVEN: return "given";
   }
   return "unknown";

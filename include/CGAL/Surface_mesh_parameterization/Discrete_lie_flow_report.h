@@ -152,6 +152,12 @@ struct Discrete_lie_flow_report
   double initial_scale = 0;
   /// The sphere: the punctures tried before one was certified.
   std::size_t initial_attempts = 0;
+  /// The sphere: edge-split vertices removed for the coarse start (0: the
+  /// start is the mesh's own); the initial map is then the coarse mesh's map
+  /// after `coarse_iterations` of the flow, these vertices put back on the
+  /// arcs between their neighbours, and `puncture_face` is a coarse face.
+  std::size_t split_vertices_removed = 0;
+  std::size_t coarse_iterations = 0;
 };
 
 } // namespace Surface_mesh_parameterization

@@ -14,6 +14,8 @@
 // A Tutte start compressed by many decades may then be reweighted: Tutte's
 // map again with the edge weights scaled by the faces' area ratios, which
 // keeps it bijective (any positive weights do) and certified the same way.
+// Tutte's map may also use Floater's mean-value weights (directed, positive:
+// still a bijection; an LU solve), which keep straight edges straight.
 // A caller's own start is normalised and certified the same way.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_SPHERE_INITIAL_MAP_H
@@ -27,6 +29,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_spherical_area.h>
 
 #include <Eigen/Sparse>
+#include <Eigen/SparseLU>
 
 #include <algorithm>
 #include <array>
@@ -43,6 +46,9 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 namespace dlf {
+
+/// The solver of the mean-value start's non-symmetric system.
+typedef Eigen::SparseLU<Sparse_matrix, Eigen::COLAMDOrdering<int> > Sphere_lu_solver;
 
 /// What the initial map did.
 struct Sphere_initial_outcome
@@ -200,6 +206,70 @@ bool punctured_planar_map(const Sphere_problem& P, int puncture, bool conformal,
   return solve_interior_2<EigenSolver>(ni, trip, rhs, idx, uv);
 }
 
+/// Floater's mean-value weights, directed: entry 6f + 2k + s is what face f
+/// gives the weight of the edge from its corner k to corner k + 1 (s = 0) or
+/// k + 2 (s = 1), tan(θ/2) / |x_j − x_i| with θ the face's 3D angle at corner
+/// k. Summed over the two faces of an edge they are Floater's w_ij, positive
+/// on any mesh with positive angles below π (Tutte's guarantee holds), and
+/// they reproduce linear functions: a vertex on a straight 3D edge between
+/// two neighbours (a needle fan's centre) stays near the segment between
+/// their images instead of being pulled towards the fan's far corners.
+inline std::vector<double> mean_value_corner_weights(const Sphere_problem& P)
+{
+  std::vector<double> w(6 * P.faces.size());
+  for(std::size_t f = 0; f < P.faces.size(); ++f)
+    for(int k = 0; k < 3; ++k) {
+      const Face& t = P.faces[f];
+      const Vec3& a = P.xyz[std::size_t(t[k])];
+      const Vec3 u = sub(P.xyz[std::size_t(t[(k + 1) % 3])], a), v = sub(P.xyz[std::size_t(t[(k + 2) % 3])], a);
+      const double lu = norm3(u), lv = norm3(v);
+      // tan(θ/2) = sin θ / (1 + cos θ) = |u × v| / (|u||v| + u·v): no cancellation for small θ.
+      const double half_tan = norm3(cross(u, v)) / (lu * lv + dot(u, v));
+      w[6 * f + 2 * std::size_t(k)] = half_tan / lu;
+      w[6 * f + 2 * std::size_t(k) + 1] = half_tan / lv;
+    }
+  return w;
+}
+
+/// The mesh minus face `puncture` mapped onto the plane as in
+/// `punctured_planar_map()` (Tutte's triangle), with directed weights
+/// (`mean_value_corner_weights()` layout, positive): each interior vertex is
+/// the convex combination of its neighbours with its own row of weights. The
+/// system is not symmetric, hence an LU solver. False if the solve fails.
+template <class LUSolver>
+bool punctured_planar_map_directed(const Sphere_problem& P, int puncture, const std::vector<double>& directed,
+                                   std::vector<Vec2>& uv)
+{
+  const std::size_t n = P.xyz.size();
+  const Face& hole = P.faces[std::size_t(puncture)];
+  std::vector<int> idx(n, 0);
+  for(int k = 0; k < 3; ++k) idx[std::size_t(hole[k])] = -1;
+  int ni = 0;
+  for(std::size_t v = 0; v < n; ++v)
+    if(idx[v] == 0) idx[v] = ni++; else idx[v] = -1;
+  uv.assign(n, Vec2{{ 0, 0 }});
+  const std::array<Vec2, 3> corners = puncture_corners(P, hole, false);
+  const int order[3] = { hole[0], hole[2], hole[1] };
+  for(int k = 0; k < 3; ++k) uv[std::size_t(order[k])] = corners[std::size_t(k)];
+  if(ni == 0) return true;
+  std::vector<Eigen::Triplet<double> > trip;
+  trip.reserve(P.faces.size() * 12);
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(ni, 2);
+  for(std::size_t f = 0; f < P.faces.size(); ++f)
+    for(int k = 0; k < 3; ++k)
+      for(int s = 0; s < 2; ++s) {
+        const Face& t = P.faces[f];
+        const int i = t[k], j = t[(k + 1 + s) % 3];
+        const int a = idx[std::size_t(i)], b = idx[std::size_t(j)];
+        if(a < 0) continue;
+        const double w = directed[6 * f + 2 * std::size_t(k) + std::size_t(s)];
+        trip.emplace_back(a, a, w);
+        if(b >= 0) trip.emplace_back(a, b, -w);
+        else { rhs(a, 0) += w * uv[std::size_t(j)][0]; rhs(a, 1) += w * uv[std::size_t(j)][1]; }
+      }
+  return solve_interior_2<LUSolver>(ni, trip, rhs, idx, uv);
+}
+
 /// Inverse stereographic projection of s·(z − centre), mirrored in y when
 /// `mirror` (the projection reverses orientation as seen from outside).
 inline void lift_to_sphere(const std::vector<Vec2>& uv, double s, const Vec2& centre, bool mirror, std::vector<Vec3>& p)
@@ -308,11 +378,14 @@ struct Sphere_reweighting
 /// kept only if certified by the exact predicate and better as set out in
 /// `Sphere_reweighting`; a round not kept is retried from the last kept
 /// weights with half the exponent. Returns the rounds kept; `sphere`,
-/// `d_area` and `scale` describe the last.
+/// `d_area` and `scale` describe the last. With `directed` (a mean-value
+/// start, `mean_value_corner_weights()`), each directed weight is scaled by
+/// its edge's factor instead of the uniform ones.
 template <class EigenSolver>
 std::size_t reweighted_tutte_map(const Sphere_problem& P, int puncture, const Area_barrier_energy& energy,
                                  std::vector<Vec3>& sphere, double& d_area, double& scale,
-                                 const Sphere_reweighting& settings = Sphere_reweighting())
+                                 const Sphere_reweighting& settings = Sphere_reweighting(),
+                                 const std::vector<double>* directed = nullptr)
 {
   if(!(d_area > settings.above) || P.faces.size() < settings.min_faces) return 0;
   const std::size_t F = P.faces.size();
@@ -332,7 +405,7 @@ std::size_t reweighted_tutte_map(const Sphere_problem& P, int puncture, const Ar
     corner_edge[c] = e;
     faces_of[e][faces_of[e][0] < 0 ? 0 : 1] = int(c / 3);
   }
-  std::vector<double> w(edges.size(), 1.), trial, corner_weights(3 * F);
+  std::vector<double> w(edges.size(), 1.), trial, corner_weights(directed ? 6 * F : 3 * F);
   double T = 0;
   for(double t : P.target) T += t;
   double share = largest_face_share(sphere, P.faces);
@@ -355,8 +428,18 @@ std::size_t reweighted_tutte_map(const Sphere_problem& P, int puncture, const Ar
     bool normal = std::isnormal(largest);
     for(std::size_t e = 0; normal && e < trial.size(); ++e) normal = std::isnormal(trial[e] /= largest);
     if(!normal) return false; // the weights' range left double precision
-    for(std::size_t c = 0; c < 3 * F; ++c) corner_weights[c] = trial[corner_edge[c]];
-    if(!punctured_planar_map<EigenSolver>(P, puncture, false, uv, &corner_weights)) return false;
+    if(directed) {
+      // Corner k's edges: to k + 1 is corner k's edge, to k + 2 is corner k + 2's.
+      for(std::size_t c = 0; c < 3 * F; ++c) {
+        const std::size_t f = c / 3, k = c % 3;
+        corner_weights[2 * c] = (*directed)[2 * c] * trial[corner_edge[c]];
+        corner_weights[2 * c + 1] = (*directed)[2 * c + 1] * trial[corner_edge[3 * f + (k + 2) % 3]];
+      }
+      if(!punctured_planar_map_directed<Sphere_lu_solver>(P, puncture, corner_weights, uv)) return false;
+    } else {
+      for(std::size_t c = 0; c < 3 * F; ++c) corner_weights[c] = trial[corner_edge[c]];
+      if(!punctured_planar_map<EigenSolver>(P, puncture, false, uv, &corner_weights)) return false;
+    }
     bool mirror = false;
     const std::pair<double, double> best = best_oriented_lift(P, energy, uv, mirror, p, u);
     if(!std::isfinite(best.second)) return false;
@@ -430,7 +513,7 @@ template <class EigenSolver>
 Sphere_initial_outcome certified_sphere_initial_map(const Sphere_problem& P, std::vector<Vec3>& sphere,
                                                     bool conformal = false, std::size_t well_shaped = 3,
                                                     bool extremal = true, bool keep_best = false,
-                                                    bool reweight = false)
+                                                    bool reweight = false, bool mean_value = false)
 {
   Sphere_initial_outcome out;
   const Area_barrier_energy energy(P.target);
@@ -443,10 +526,13 @@ Sphere_initial_outcome certified_sphere_initial_map(const Sphere_problem& P, std
   std::vector<Vec3> p;
   std::vector<double> u;
   double best_E = std::numeric_limits<double>::infinity();
+  mean_value = mean_value && !conformal;
+  const std::vector<double> directed = mean_value ? mean_value_corner_weights(P) : std::vector<double>();
   for(int f : candidates) {
     ++out.attempts;
-    if(!punctured_planar_map<EigenSolver>(P, f, conformal, uv)) {
-      why << " puncture " << f << ": the " << (conformal ? "cotangent" : "Tutte") << " solve failed;";
+    if(mean_value ? !punctured_planar_map_directed<Sphere_lu_solver>(P, f, directed, uv)
+                  : !punctured_planar_map<EigenSolver>(P, f, conformal, uv)) {
+      why << " puncture " << f << ": the " << (conformal ? "cotangent" : mean_value ? "mean-value" : "Tutte") << " solve failed;";
       continue;
     }
     bool mirror = false;
@@ -470,7 +556,8 @@ Sphere_initial_outcome certified_sphere_initial_map(const Sphere_problem& P, std
   if(out.certified) {
     out.d_area = flat_d_area(sphere, P.faces, P.target);
     if(reweight && !conformal)
-      out.reweightings = reweighted_tutte_map<EigenSolver>(P, out.puncture, energy, sphere, out.d_area, out.scale);
+      out.reweightings = reweighted_tutte_map<EigenSolver>(P, out.puncture, energy, sphere, out.d_area, out.scale,
+                                                           Sphere_reweighting(), mean_value ? &directed : nullptr);
   }
   else out.message = std::string("no ") + (conformal ? "conformal " : "") + "initial spherical map could be certified after " +
                      std::to_string(out.attempts) + " punctures:" + why.str();

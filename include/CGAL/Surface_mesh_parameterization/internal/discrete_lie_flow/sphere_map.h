@@ -20,6 +20,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_initial_map.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_paper_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_problem.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_split_vertices.h>
 
 #include <chrono>
 #include <string>
@@ -29,6 +30,42 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 namespace dlf {
+
+/// The certified flow's start on a mesh with many edge-split vertices
+/// (`sphere_split_vertices.h`): the coarse mesh without them is mapped (the
+/// library's start and the certified flow, the caller's options without the
+/// callback), and the map is prolongated. The fans of needles around split
+/// points are what slows the flow on such meshes (hundreds of iterations
+/// capped by their critical roots); the coarse mesh has none and the
+/// prolongation keeps the coarse map's shares to second order. False (and
+/// `p` untouched) when there is little to remove, the coarse map fails, or
+/// the prolongated map is not certified by the exact predicate.
+template <class EigenSolver>
+bool coarse_sphere_start(const Sphere_problem& P, std::vector<Vec3>& p, const Discrete_lie_flow_options& opt,
+                         Discrete_lie_flow_report& R, const Split_vertex_settings& settings = Split_vertex_settings())
+{
+  const Split_vertex_coarsening c = coarsen_split_vertices(P, settings.sin_tolerance);
+  if(double(c.removed.size()) < settings.least_fraction * double(P.xyz.size())) return false;
+  std::vector<Vec3> q;
+  const Sphere_initial_outcome init = certified_sphere_initial_map<EigenSolver>(
+    c.coarse, q, false, 3, true, false, true, opt.sphere.start == Discrete_lie_flow_sphere_start::MEAN_VALUE);
+  if(!init.certified) return false;
+  Discrete_lie_flow_options coarse_options = opt;
+  coarse_options.callback = nullptr;
+  EigenSolver solver;
+  Sphere_certified_flow<EigenSolver> flow(c.coarse, q, coarse_options, solver, Sphere_flow_settings());
+  const Flow_outcome out = run_flow(flow, coarse_options);
+  if(out.stop_reason == Discrete_lie_flow_stop_reason::STALLED || out.solver_failed) return false;
+  std::vector<Vec3> fine = prolongate_split_vertices(c, q);
+  if(!count_orientations_sphere(fine, P.faces).all_positive()) return false;
+  p.swap(fine);
+  R.split_vertices_removed = c.removed.size();
+  R.coarse_iterations = out.iterations;
+  R.puncture_face = init.puncture;
+  R.initial_scale = init.scale;
+  R.initial_attempts = init.attempts;
+  return true;
+}
 
 /// Validation, then the certified initial map `p`: the caller's `given`
 /// one when not null, else the library's start `opt.sphere.start`.
@@ -54,12 +91,15 @@ Error_code start_sphere(Sphere_problem& P, std::vector<Vec3>& p, const Discrete_
     // The certified flow opens a less compressed start in fewer steps; the
     // paper's modes keep the plain Tutte start they are measured from.
     const bool conformal = opt.sphere.start == Discrete_lie_flow_sphere_start::CONFORMAL;
-    const Sphere_initial_outcome init = certified_sphere_initial_map<EigenSolver>(
-      P, p, conformal, 3, true, false, opt.mode == Discrete_lie_flow_mode::CERTIFIED);
-    R.initial_attempts = init.attempts;
-    if(!init.certified) return report_failure(R, ERROR_INITIAL_MAP_FOLDED, init.message);
-    R.puncture_face = init.puncture;
-    R.initial_scale = init.scale;
+    if(!(opt.mode == Discrete_lie_flow_mode::CERTIFIED && !conformal && coarse_sphere_start<EigenSolver>(P, p, opt, R))) {
+      const Sphere_initial_outcome init = certified_sphere_initial_map<EigenSolver>(
+        P, p, conformal, 3, true, false, opt.mode == Discrete_lie_flow_mode::CERTIFIED,
+        opt.sphere.start == Discrete_lie_flow_sphere_start::MEAN_VALUE);
+      R.initial_attempts = init.attempts;
+      if(!init.certified) return report_failure(R, ERROR_INITIAL_MAP_FOLDED, init.message);
+      R.puncture_face = init.puncture;
+      R.initial_scale = init.scale;
+    }
   }
   R.seconds_initial = std::chrono::duration<double>(Clock::now() - t0).count();
   R.face_density = face_densities(P);
