@@ -403,7 +403,8 @@ int main(int argc, char** argv)
     ("no-large", "skip the large and the large irregular sections")
     ("irregular", po::value<std::string>(&irregular_arg)->default_value(
        "fandisk_large.off+loop1+jitter90,bunny00.off+loop1+decimate50+jitter90,diplodocus.off+loop1+jitter90,"
-       "armadillo.off+loop1+jitter90,bunny00.off+needles2,bear.off+loop2+decimate60+jitter90"),
+       "armadillo.off+loop1+jitter90,bunny00.off+needles2,bunny00.off+needles2+jitter50,"
+       "camel.off+loop1+needles2+jitter20,bear.off+loop2+decimate60+jitter90"),
      "comma-separated meshes of the large irregular section (irregular_meshes.h)")
     ("write-meshes", po::value<std::string>(&write_dir),
      "write the meshes of the large and large irregular sections as OFF files into this directory (named by "

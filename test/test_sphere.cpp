@@ -1333,7 +1333,8 @@ TEST(Sphere_start, SplitVerticesCoarsenToTheOriginalMesh)
   P.xyz = m.xyz;
   P.faces = m.faces;
   ASSERT_TRUE(D::validate_sphere_geometry(P, {}).ok());
-  const D::Split_vertex_coarsening c = D::coarsen_split_vertices(P);
+  // Exact edge splits (straight up to rounding) coarsen to exactly cow.
+  const D::Split_vertex_coarsening c = D::coarsen_split_vertices(P, 1e-6);
   EXPECT_EQ(c.removed.size(), m.xyz.size() - m0.xyz.size());
   ASSERT_EQ(c.coarse.faces.size(), m0.faces.size());
   for(std::size_t v = 0; v < m0.xyz.size(); ++v) ASSERT_EQ(c.coarse_index[v], int(v));
@@ -1358,7 +1359,11 @@ TEST(Sphere_start, SplitVerticesCoarsenToTheOriginalMesh)
   Q.xyz = m0.xyz;
   Q.faces = m0.faces;
   ASSERT_TRUE(D::validate_sphere_geometry(Q, {}).ok());
-  EXPECT_TRUE(D::coarsen_split_vertices(Q).removed.empty());
+  EXPECT_TRUE(D::coarsen_split_vertices(Q, 1e-6).removed.empty());
+  // Within the default tolerance a few of cow's own vertices are nearly
+  // straight, too few for the coarse start (its map below is untouched).
+  EXPECT_LT(double(D::coarsen_split_vertices(Q).removed.size()),
+            D::Split_vertex_settings().least_fraction * double(Q.xyz.size()));
 }
 
 // The default certified map of a mesh with fans of needles starts from its
@@ -1374,7 +1379,10 @@ TEST(Sphere_map, SplitVerticesStartFromTheCoarseMesh)
   std::vector<V3> p;
   const SMP::Discrete_lie_flow_report r = map_to_sphere(sm, p);
   ASSERT_EQ(int(r.status), int(SMP::OK)) << r.message;
-  EXPECT_EQ(r.split_vertices_removed, m.xyz.size() - before);
+  // Nearly every split point goes (a few of cow's own nearly straight
+  // vertices of degree 4 go first and hold some back).
+  EXPECT_GE(double(r.split_vertices_removed), 0.95 * double(m.xyz.size() - before));
+  EXPECT_LE(r.split_vertices_removed, m.xyz.size() - before + before / 10);
   EXPECT_GT(r.coarse_iterations, 0u);
   EXPECT_EQ(r.initial_metrics.inverted_faces, 0u);
   const Sphere_signs s = exact_sphere_signs(p, m.faces);
@@ -1387,6 +1395,32 @@ TEST(Sphere_map, SplitVerticesStartFromTheCoarseMesh)
   ASSERT_EQ(int(plain.status), int(SMP::OK)) << plain.message;
   EXPECT_EQ(plain.split_vertices_removed, 0u);
   EXPECT_EQ(plain.coarse_iterations, 0u);
+}
+
+// Split points moved off their edges (needles, then a tangential jitter of
+// 20%) are not straight up to rounding but within the default tolerance:
+// the default map still starts from the coarse mesh, certified, goals met.
+TEST(Sphere_map, JitteredSplitVerticesStartFromTheCoarseMesh)
+{
+  SM sm = read_sphere_mesh("cow");
+  const std::size_t before = num_vertices(sm);
+  dlf_benchmark::make_irregular(sm, { { "needles", 2 }, { "jitter", 20 } });
+  const Index_mesh m = index_mesh(sm);
+  D::Sphere_problem P;
+  P.xyz = m.xyz;
+  P.faces = m.faces;
+  ASSERT_TRUE(D::validate_sphere_geometry(P, {}).ok());
+  const std::size_t added = m.xyz.size() - before;
+  EXPECT_LT(D::coarsen_split_vertices(P, 1e-6).removed.size(), added / 10); // no longer exact splits
+  std::vector<V3> p;
+  const SMP::Discrete_lie_flow_report r = map_to_sphere(sm, p);
+  ASSERT_EQ(int(r.status), int(SMP::OK)) << r.message;
+  EXPECT_GE(r.split_vertices_removed, added / 2);
+  const Sphere_signs s = exact_sphere_signs(p, m.faces);
+  EXPECT_EQ(s.pos, m.faces.size()) << s.neg << " inverted, " << s.zero << " degenerate";
+  const std::pair<double, double> d = sphere_d_area(m.xyz, p, m.faces);
+  EXPECT_LE(d.first, 2.01 + 1e-9);
+  EXPECT_LE(d.second, 0.02);
 }
 
 // A caller's start: an earlier result starts a run that has nothing left to

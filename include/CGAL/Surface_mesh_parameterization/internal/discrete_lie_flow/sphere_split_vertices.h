@@ -33,8 +33,13 @@ namespace dlf {
 struct Split_vertex_settings
 {
   /// The sine of the largest angle between a split vertex's two spokes and
-  /// a straight line: edge splits are straight up to rounding.
-  double sin_tolerance = 1e-6;
+  /// a straight line (0.2: about 11.5°). Exact edge splits are straight up
+  /// to rounding; split points moved off their edges (a scanner's noise, a
+  /// smoothing pass) are nearly straight and slow the flow just as much.
+  /// The coarse mesh then only approximates the shape, which costs nothing
+  /// in certainty: the prolongated map is certified or not used, and the
+  /// fine flow corrects the shares (doc/sphere.md, "Edge-split vertices").
+  double sin_tolerance = 0.2;
   /// Coarsen only when at least this fraction of the vertices go: a few
   /// split vertices do not slow the flow, and the coarse flow is paid in full.
   double least_fraction = 0.1;
@@ -62,7 +67,8 @@ struct Split_vertex_coarsening
 /// already joined by an edge (the coarse mesh stays a closed manifold of the
 /// same genus). A vertex whose neighbour was removed is looked at again, so
 /// a segment split at several points loses all of them.
-inline Split_vertex_coarsening coarsen_split_vertices(const Sphere_problem& P, double sin_tolerance = 1e-6)
+inline Split_vertex_coarsening coarsen_split_vertices(const Sphere_problem& P,
+                                                      double sin_tolerance = Split_vertex_settings().sin_tolerance)
 {
   const std::size_t n = P.xyz.size();
   std::vector<Face> faces = P.faces;
