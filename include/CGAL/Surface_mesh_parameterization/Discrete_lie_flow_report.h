@@ -157,6 +157,7 @@ struct Discrete_lie_flow_report
   /// after `coarse_iterations` of the flow, these vertices put back on the
   /// arcs between their neighbours, and `puncture_face` is a coarse face.
   std::size_t split_vertices_removed = 0;
+  /// The sphere: iterations of the coarse mesh's flow (0 without a coarse start).
   std::size_t coarse_iterations = 0;
 };
 
