@@ -156,6 +156,26 @@ inline std::vector<std::pair<std::uint64_t, double> > conformal_edge_weights(con
   return w;
 }
 
+/// The punctured face's corners fixed in `uv` (every other point at 0) and
+/// the unknowns' numbering `idx` (−1 for the three fixed vertices); returns
+/// the number of unknowns. Shared by the symmetric and the directed maps.
+inline int puncture_unknowns(const Sphere_problem& P, int puncture, bool conformal, std::vector<Vec2>& uv,
+                             std::vector<int>& idx)
+{
+  const std::size_t n = P.xyz.size();
+  const Face& hole = P.faces[std::size_t(puncture)];
+  idx.assign(n, 0);
+  for(int k = 0; k < 3; ++k) idx[std::size_t(hole[k])] = -1;
+  int ni = 0;
+  for(std::size_t v = 0; v < n; ++v)
+    if(idx[v] == 0) idx[v] = ni++; else idx[v] = -1;
+  uv.assign(n, Vec2{{ 0, 0 }});
+  const std::array<Vec2, 3> corners = puncture_corners(P, hole, conformal);
+  const int order[3] = { hole[0], hole[2], hole[1] };
+  for(int k = 0; k < 3; ++k) uv[std::size_t(order[k])] = corners[std::size_t(k)];
+  return ni;
+}
+
 /// The mesh minus face `puncture` mapped onto the plane with the puncture's
 /// corners fixed (`puncture_corners()`), the faces counter-clockwise: the
 /// harmonic map of Tutte's uniform weights, or with `conformal` of
@@ -167,17 +187,8 @@ template <class EigenSolver>
 bool punctured_planar_map(const Sphere_problem& P, int puncture, bool conformal, std::vector<Vec2>& uv,
                           const std::vector<double>* corner_weights = nullptr)
 {
-  const std::size_t n = P.xyz.size();
-  const Face& hole = P.faces[std::size_t(puncture)];
-  std::vector<int> idx(n, 0);
-  for(int k = 0; k < 3; ++k) idx[std::size_t(hole[k])] = -1;
-  int ni = 0;
-  for(std::size_t v = 0; v < n; ++v)
-    if(idx[v] == 0) idx[v] = ni++; else idx[v] = -1;
-  uv.assign(n, Vec2{{ 0, 0 }});
-  const std::array<Vec2, 3> corners = puncture_corners(P, hole, conformal);
-  const int order[3] = { hole[0], hole[2], hole[1] };
-  for(int k = 0; k < 3; ++k) uv[std::size_t(order[k])] = corners[std::size_t(k)];
+  std::vector<int> idx;
+  const int ni = puncture_unknowns(P, puncture, conformal, uv, idx);
   if(ni == 0) return true;
   std::vector<std::pair<std::uint64_t, double> > cot;
   if(conformal && !corner_weights) cot = conformal_edge_weights(P);
@@ -240,17 +251,8 @@ template <class LUSolver>
 bool punctured_planar_map_directed(const Sphere_problem& P, int puncture, const std::vector<double>& directed,
                                    std::vector<Vec2>& uv)
 {
-  const std::size_t n = P.xyz.size();
-  const Face& hole = P.faces[std::size_t(puncture)];
-  std::vector<int> idx(n, 0);
-  for(int k = 0; k < 3; ++k) idx[std::size_t(hole[k])] = -1;
-  int ni = 0;
-  for(std::size_t v = 0; v < n; ++v)
-    if(idx[v] == 0) idx[v] = ni++; else idx[v] = -1;
-  uv.assign(n, Vec2{{ 0, 0 }});
-  const std::array<Vec2, 3> corners = puncture_corners(P, hole, false);
-  const int order[3] = { hole[0], hole[2], hole[1] };
-  for(int k = 0; k < 3; ++k) uv[std::size_t(order[k])] = corners[std::size_t(k)];
+  std::vector<int> idx;
+  const int ni = puncture_unknowns(P, puncture, false, uv, idx);
   if(ni == 0) return true;
   std::vector<Eigen::Triplet<double> > trip;
   trip.reserve(P.faces.size() * 12);
