@@ -711,8 +711,10 @@ TEST(Features, RejectedByExactCheckIsCounted)
 
 // The BLAS threads during a flow: one by default on a small mesh, the given
 // number with solver_threads > 0, untouched with < 0 or when the environment
-// names a number; always restored after the run. OpenMP's dynamic
-// adjustment (CHOLMOD's own loops) is on during an automatic run only. And a run stopped by the
+// names a number; always restored after the run. CHOLMOD's own OpenMP
+// loops run on the calling thread (max-active-levels 0) during an automatic
+// run on a mesh this small only, and OpenMP's dynamic adjustment stays off
+// there. And a run stopped by the
 // iteration cap is OK, not converged, and says where it stopped.
 TEST(Features, SolverThreadsAreSetForTheFlowAndRestored)
 {
@@ -722,9 +724,14 @@ TEST(Features, SolverThreadsAreSetForTheFlowAndRestored)
   const Get get = reinterpret_cast<Get>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
   if(set == nullptr || get == nullptr) GTEST_SKIP() << "no OpenBLAS in this process";
   // CTest names the thread counts for every test; this one needs them unnamed.
-  for(const char* v : { "OPENBLAS_NUM_THREADS", "GOTO_NUM_THREADS", "OMP_NUM_THREADS", "OMP_THREAD_LIMIT", "OMP_DYNAMIC" }) unsetenv(v);
+  for(const char* v : { "OPENBLAS_NUM_THREADS", "GOTO_NUM_THREADS", "OMP_NUM_THREADS", "OMP_THREAD_LIMIT", "OMP_DYNAMIC",
+                        "OMP_MAX_ACTIVE_LEVELS", "OMP_NESTED" })
+    unsetenv(v);
   // CHOLMOD's OpenMP runtime, when it has one.
   const Get get_dynamic = reinterpret_cast<Get>(dlsym(RTLD_DEFAULT, "omp_get_dynamic"));
+  const Get get_levels = reinterpret_cast<Get>(dlsym(RTLD_DEFAULT, "omp_get_max_active_levels"));
+  const int levels_before = get_levels ? get_levels() : -1;
+  ASSERT_NE(levels_before, 0);
   set(3);
   ASSERT_EQ(get(), 3) << "this OpenBLAS ignores openblas_set_num_threads()";
   Loaded m;
@@ -734,10 +741,11 @@ TEST(Features, SolverThreadsAreSetForTheFlowAndRestored)
     SMP::Discrete_lie_flow_options o;
     o.solver_threads = solver_threads;
     o.max_iterations = cap;
-    int seen = -1, dynamic = -1;
+    int seen = -1, dynamic = -1, levels = -1;
     o.callback = [&](const SMP::Discrete_lie_flow_iteration&) {
       seen = get();
       dynamic = get_dynamic ? get_dynamic() : -1;
+      levels = get_levels ? get_levels() : -1;
       return true;
     };
     Dlf dlf(Dlf::Initial_parameterizer(), o);
@@ -745,8 +753,12 @@ TEST(Features, SolverThreadsAreSetForTheFlowAndRestored)
     EXPECT_EQ(get(), 3) << "not restored after solver_threads = " << solver_threads;
     if(get_dynamic) {
       EXPECT_EQ(get_dynamic(), 0) << "OpenMP's dynamic adjustment not restored after solver_threads = " << solver_threads;
+      EXPECT_EQ(dynamic, 0) << "solver_threads = " << solver_threads;
+    }
+    if(get_levels) {
+      EXPECT_EQ(get_levels(), levels_before) << "OpenMP's max-active-levels not restored after solver_threads = " << solver_threads;
       const bool automatic = solver_threads == 0 && std::getenv("OPENBLAS_NUM_THREADS") == nullptr;
-      EXPECT_EQ(dynamic, automatic ? 1 : 0) << "solver_threads = " << solver_threads;
+      EXPECT_EQ(levels == 0, automatic) << "solver_threads = " << solver_threads << ": max-active-levels " << levels;
     }
     if(cap == 1) {
       EXPECT_FALSE(dlf.report().converged());

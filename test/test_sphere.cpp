@@ -1035,6 +1035,122 @@ TEST(Sphere_flow, CappedStepsAfterACrawlRegularizeMore)
   EXPECT_DOUBLE_EQ(D::sphere_regularization(after_crawl, full, D::sphere_capped_ceiling(s, 2.05, true)), s.capped_far_ceiling / 4);
 }
 
+// The split of a mesh for parallel sweeps: every vertex once, in an
+// interior or in the separator; no face with corners in two interiors
+// (what lets the interiors move at once); a small separator; regions of
+// about equal size.
+TEST(Sphere_flow, SweepPartitionSeparatesTheInteriors)
+{
+  const Index_mesh m = index_mesh(read_sphere_mesh("bunny00"));
+  const std::size_t n = m.xyz.size();
+  const D::Sweep_partition part(m.xyz, m.faces, 8);
+  ASSERT_EQ(part.interior.size(), 8u);
+  std::vector<int> region(n, -2);
+  for(std::size_t r = 0; r < 8; ++r) {
+    EXPECT_GT(part.interior[r].size(), n / 16) << "region " << r;
+    for(std::size_t v : part.interior[r]) {
+      ASSERT_EQ(region[v], -2) << "vertex " << v << " twice";
+      region[v] = int(r);
+    }
+  }
+  for(std::size_t v : part.separator) {
+    ASSERT_EQ(region[v], -2) << "vertex " << v << " twice";
+    region[v] = -1;
+  }
+  for(std::size_t v = 0; v < n; ++v) ASSERT_NE(region[v], -2) << "vertex " << v << " missing";
+  for(std::size_t t = 0; t < m.faces.size(); ++t) {
+    int in = -1;
+    for(int k = 0; k < 3; ++k) {
+      const int r = region[std::size_t(m.faces[t][k])];
+      if(r < 0) continue;
+      EXPECT_TRUE(in < 0 || in == r) << "face " << t << " has corners in the interiors " << in << " and " << r;
+      in = r;
+    }
+  }
+  EXPECT_LT(part.separator.size(), n / 8) << "the regions are not compact";
+}
+
+// The sweeps of a large mesh, run on the partition: whatever the number of
+// threads, the same points to the last bit; every sweep lowers the energy,
+// keeps every face positive by the exact predicate and leaves the areas
+// those of the points.
+TEST(Sphere_flow, PartitionedSweepsDoNotDependOnTheThreads)
+{
+  const Index_mesh m = index_mesh(read_sphere_mesh("bunny00"));
+  D::Sphere_problem P;
+  P.xyz = m.xyz;
+  P.faces = m.faces;
+  ASSERT_TRUE(D::validate_sphere_geometry(P, {}).ok());
+  std::vector<V3> start;
+  ASSERT_TRUE(D::certified_sphere_initial_map<D::Default_spd_solver>(P, start, false).certified);
+  const D::Weighted_area_energy energy(P.target, 0.5);
+  const D::Vertex_faces around(start.size(), P.faces);
+  const D::Sweep_partition part(P.xyz, P.faces, 8);
+  std::vector<std::vector<V3> > result;
+  for(int threads : { 1, 2, 3 }) {
+    std::vector<V3> p = start;
+    std::vector<double> u, w;
+    D::signed_areas_sphere(p, P.faces, u);
+    D::cone_areas_sphere(p, P.faces, w);
+    double E = energy.value(u) + 0.03 * energy.value(w);
+    for(int sweep = 0; sweep < 3; ++sweep) {
+      const D::Relaxation_outcome r = D::relax_sphere_vertices(P.faces, around, energy, 0.03, 0.8, part, threads, p, u, w);
+      EXPECT_GT(r.moved, p.size() / 2);
+      std::vector<double> u_now, w_now;
+      D::signed_areas_sphere(p, P.faces, u_now);
+      D::cone_areas_sphere(p, P.faces, w_now);
+      for(std::size_t t = 0; t < P.faces.size(); ++t) {
+        ASSERT_NEAR(u[t], u_now[t], 1e-12 * u_now[t]) << "face " << t;
+        ASSERT_NEAR(w[t], w_now[t], 1e-12 * w_now[t]) << "face " << t;
+      }
+      const double E_now = energy.value(u_now) + 0.03 * energy.value(w_now);
+      EXPECT_LT(E_now, E) << "sweep " << sweep << ", " << threads << " threads";
+      E = E_now;
+    }
+    EXPECT_EQ(exact_sphere_signs(p, P.faces).pos, P.faces.size());
+    result.push_back(p);
+  }
+  EXPECT_TRUE(result[1] == result[0]) << "2 threads differ from 1";
+  EXPECT_TRUE(result[2] == result[0]) << "3 threads differ from 1";
+}
+
+// The certified flow's large-mesh path (parallel sweeps, fewer of them,
+// coarse supernodes, the reused factorisation in the opening) on a mesh
+// made to count as large: goals met, certified, and the same map on 1 and
+// on 2 threads.
+TEST(Sphere_flow, LargeMeshPathMeetsTheGoalsOnAnyNumberOfThreads)
+{
+  const Index_mesh m = index_mesh(read_sphere_mesh("homer"));
+  D::Sphere_problem P;
+  P.xyz = m.xyz;
+  P.faces = m.faces;
+  ASSERT_TRUE(D::validate_sphere_geometry(P, {}).ok());
+  std::vector<V3> start;
+  ASSERT_TRUE(D::certified_sphere_initial_map<D::Default_spd_solver>(P, start, false).certified);
+  D::Sphere_flow_settings settings;
+  settings.large_from = 0;
+  std::vector<std::vector<V3> > result;
+  std::size_t iterations = 0;
+  for(int threads : { 1, 2 }) {
+    SMP::Discrete_lie_flow_options opt;
+    opt.sphere.threads = threads;
+    std::vector<V3> p = start;
+    D::Default_spd_solver solver;
+    D::Sphere_certified_flow<D::Default_spd_solver> flow(P, p, opt, solver, settings);
+    const D::Flow_outcome out = D::run_flow(flow, opt);
+    EXPECT_EQ(int(out.stop_reason), int(SMP::Discrete_lie_flow_stop_reason::CONVERGED));
+    EXPECT_LT(out.factorizations, out.iterations) << "no opening step reused its factorisation";
+    EXPECT_EQ(exact_sphere_signs(p, P.faces).pos, P.faces.size());
+    const std::pair<double, double> d = sphere_d_area(m.xyz, p, m.faces);
+    EXPECT_LE(d.first, 2.01 + 1e-9);
+    EXPECT_LE(d.second, 0.02);
+    iterations = out.iterations;
+    result.push_back(p);
+  }
+  EXPECT_GT(iterations, 0u);
+  EXPECT_TRUE(result[1] == result[0]) << "2 threads differ from 1";
+}
+
 TEST(Sphere_map, TinyMeshes)
 {
   // Few faces: the map exists and is certified; the area targets may be out of reach.

@@ -93,6 +93,9 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
      "certified: never folds the input triangles; paper: the paper's flow with edge flips, stabilised "
      "(plateau and stall tests, best iterate); literal: Algorithm 1 as printed (step mu * min critical step, "
      "stop when ||h_M - h_Omega||^2 < --threshold; a collapse ends the run)")
+    ("threads", po::value<int>(&s.options.sphere.threads)->value_name("N"),
+     "threads of the certified flow's vertex sweeps on meshes of 50,000 vertices or more "
+     "(default 0: the hardware threads, at most 8); the result is the same whatever the number")
     ("fixed-step", po::value<double>(&s.options.fixed_step)->value_name("X"),
      "a fixed step X > 0 instead of the adaptive one; literal mode: a step that folds the flowing mesh "
      "ends the run as collapsed, other modes: as stalled")
@@ -149,6 +152,7 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
   s.input = inputs[0];
   if(!(s.options.tolerance >= 0)) throw Cli_error("--tolerance must be >= 0");
   if(!(s.options.sphere.log_area_tolerance >= 0)) throw Cli_error("--log-area-tolerance must be >= 0");
+  if(s.options.sphere.threads < 0) throw Cli_error("--threads must be 0 (automatic) or positive");
   if(!(s.options.certified.share_tolerance >= 0) || !std::isfinite(s.options.certified.share_tolerance))
     throw Cli_error("--share-tolerance must be a number >= 0");
   if(vm.count("mu") && !(s.options.mu > 0 && s.options.mu < 1)) throw Cli_error("--mu must be in (0, 1)");

@@ -282,6 +282,10 @@ struct Discrete_lie_flow_sphere_options
   /// The initial map (`TUTTE` or `CONFORMAL`; a map of the caller's own is
   /// given with `set_initial_map()`).
   Discrete_lie_flow_sphere_start start = Discrete_lie_flow_sphere_start::TUTTE;
+  /// Threads of the certified flow's vertex sweeps on meshes of 50,000
+  /// vertices or more (smaller ones sweep on one): 0 the hardware threads
+  /// (at most 8), else that many. The result is the same whatever the number.
+  int threads = 0;
 };
 
 /// \ingroup PkgDiscreteLieFlowOptions

@@ -32,6 +32,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/area_elements.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certification.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/critical_step.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/density_levels.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow_driver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sparse_solver.h>
@@ -46,6 +47,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <thread>
 #include <vector>
 
 namespace CGAL {
@@ -101,6 +103,26 @@ struct Sphere_flow_settings
   std::size_t relaxation_sweeps = 10;
   /// Sweeps visit the corners of the faces with |log area ratio| above this (0: every vertex).
   double relaxation_threshold = 0;
+  /// Large meshes (from this many vertices on; CGAL's data set has none)
+  /// spend their time in factorisations and sweeps of 100K unknowns and
+  /// more, so there:
+  /// - the polish's sweeps (every vertex) run on `sweep_parts` regions of
+  ///   the mesh at once, then on the vertices between them
+  ///   (`Sweep_partition`; the result does not depend on the number of
+  ///   threads), and only `large_relaxation_sweeps` of them: the sweeps
+  ///   after the fifth lowered the energy by 0.1% each at most;
+  /// - CHOLMOD merges columns into coarser supernodes
+  ///   (`use_coarse_supernodes()`);
+  /// - an opening step shorter than `reuse_factor_below` lets the next
+  ///   direction be solved with the last factorisation of the Sobolev
+  ///   metric (every second iteration at most): the compressed start of a
+  ///   scanned mesh unwinds in dozens of such steps.
+  /// Measurements: doc/sphere.md, "Large irregular meshes: the cost of an
+  /// iteration".
+  std::size_t large_from = 50000;
+  std::size_t sweep_parts = 8;
+  std::size_t large_relaxation_sweeps = 5;
+  double reuse_factor_below = 1e-2;
   /// Fans of needles stall the opening: the same few faces cap the Sobolev
   /// step at 1e-6 – 1e-5 for hundreds of iterations while D_area falls by
   /// 0.3–0.6% per step. When an opening step shorter than `crawl_step`
@@ -198,7 +220,12 @@ public:
       m_polish_energy(P.target, settings.uniform_weight), m_cone_energy(P.target, 0), m_kappa(settings.cone_weight), m_solver(eigen_solver),
       m_newton_solver(m_newton_eigen_solver), m_eps(settings.newton_regularization), m_around(0, std::vector<Face>()),
       m_d(p.size()), m_trial(p.size()), m_levels(P.xyz, P.faces, P.target)
-  {}
+  {
+    if(m_n >= settings.large_from) {
+      use_coarse_supernodes(eigen_solver);
+      use_coarse_supernodes(m_newton_eigen_solver);
+    }
+  }
 
   bool start(Flow_outcome& out)
   {
@@ -490,7 +517,13 @@ private:
     }
     {
       Scoped_timer timer(out.seconds_solve);
-      bool solved = m_solver.factorize(K);
+      // A short step moved the mesh little: the last factorisation still
+      // preconditions well (`Sphere_flow_settings::reuse_factor_below`).
+      const bool reuse = m_factored && !m_reused && !m_polish && m_n >= m_settings.large_from && m_lambda_prev < m_settings.reuse_factor_below;
+      bool solved = reuse || m_solver.factorize(K);
+      m_factored = solved;
+      m_reused = reuse;
+      if(reuse) --out.factorizations;
       if(solved) {
         // x, y and z in one solve: one pass over the factor for the three.
         Eigen::MatrixXd b(Eigen::Index(m_n), 3), x;
@@ -523,9 +556,15 @@ private:
     const std::vector<std::size_t> active =
       vertices_to_relax(m_P.faces, m_polish_energy, m_u, m_n, m_settings.relaxation_threshold);
     const double mu = step_fraction(m_opt);
+    const bool large = m_n >= m_settings.large_from;
+    const bool parallel = large && m_settings.relaxation_threshold == 0 && m_settings.sweep_parts > 1;
+    if(parallel && m_partition.interior.empty()) m_partition = Sweep_partition(m_P.xyz, m_P.faces, m_settings.sweep_parts);
+    const std::size_t sweeps = large ? (std::min)(m_settings.relaxation_sweeps, m_settings.large_relaxation_sweeps) : m_settings.relaxation_sweeps;
     m_trial = m_p; // the committed map, kept in case the sweeps' rounding misleads them
-    for(std::size_t k = 0; k < m_settings.relaxation_sweeps && !active.empty(); ++k) {
-      const Relaxation_outcome r = relax_sphere_vertices(m_P.faces, m_around, m_polish_energy, m_kappa, mu, active, m_p, m_u, m_w);
+    for(std::size_t k = 0; k < sweeps && !active.empty(); ++k) {
+      const Relaxation_outcome r =
+        parallel ? relax_sphere_vertices(m_P.faces, m_around, m_polish_energy, m_kappa, mu, m_partition, sweep_threads(), m_p, m_u, m_w)
+                 : relax_sphere_vertices(m_P.faces, m_around, m_polish_energy, m_kappa, mu, active, m_p, m_u, m_w);
       out.rejected_by_exact_check += r.refused_by_exact_check;
     }
     m_E = evaluate(m_p, m_u, m_w); // drop the sweeps' incremental rounding
@@ -533,6 +572,14 @@ private:
       m_p.swap(m_trial);
       m_E = evaluate(m_p, m_u, m_w);
     }
+  }
+
+  /// The threads of the parallel sweeps (`Discrete_lie_flow_sphere_options::threads`).
+  int sweep_threads() const
+  {
+    if(m_opt.sphere.threads > 0) return m_opt.sphere.threads;
+    const unsigned h = std::thread::hardware_concurrency();
+    return h == 0 ? 1 : (h > 8 ? 8 : int(h));
   }
 
   /// The opening's local sweeps (see `Sphere_flow_settings::local_sweep_memory`).
@@ -603,6 +650,7 @@ private:
   double m_eps;
   std::vector<double> m_curvature, m_curvature_cone;
   Vertex_faces m_around;
+  Sweep_partition m_partition; // built at the first parallel sweep
   // u: the energy's areas (cone areas in the opening, flat ones in the
   // polish); w: the cone areas of the polish.
   std::vector<double> m_u, m_w, m_dE, m_dE_cone, m_u_trial, m_w_trial, m_rho, m_flat;
@@ -617,6 +665,7 @@ private:
   std::vector<int> m_limiters; // the faces that limited the last opening steps
   double m_E = 0, m_E_trial = 0, m_D = 0, m_slope = 0;
   double m_lambda_prev = infinite_step();
+  bool m_factored = false, m_reused = false; // the Sobolev factorisation: there, and used twice
   std::vector<double> m_mean_history;
   const Density_levels m_levels;
 };

@@ -16,6 +16,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow_driver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/morton_order.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/parallel_ranges.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/solver_threads.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_coarse_level.h>
@@ -626,31 +627,9 @@ private:
 inline void locality_order(const std::vector<Vec3>& x, const std::vector<Tet>& tets, std::vector<int>& vertex_to_new,
                            std::vector<int>& tet_order)
 {
-  Vec3 lo = x.empty() ? Vec3{{ 0, 0, 0 }} : x[0], hi = lo;
-  for(const Vec3& p : x)
-    for(std::size_t c = 0; c < 3; ++c) { lo[c] = (std::min)(lo[c], p[c]); hi[c] = (std::max)(hi[c], p[c]); }
-  auto spread = [](std::uint64_t v) { // 21 bits to every third of 63
-    v &= 0x1fffff;
-    v = (v | v << 32) & 0x1f00000000ffffULL;
-    v = (v | v << 16) & 0x1f0000ff0000ffULL;
-    v = (v | v << 8) & 0x100f00f00f00f00fULL;
-    v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
-    v = (v | v << 2) & 0x1249249249249249ULL;
-    return v;
-  };
-  std::vector<std::pair<std::uint64_t, int> > key(x.size());
-  for(std::size_t v = 0; v < x.size(); ++v) {
-    std::uint64_t k = 0;
-    for(std::size_t c = 0; c < 3; ++c) {
-      const double span = hi[c] - lo[c];
-      const double q = span > 0 ? (x[v][c] - lo[c]) / span * 2097151. : 0.;
-      k |= spread(std::uint64_t(q)) << c;
-    }
-    key[v] = std::make_pair(k, int(v));
-  }
-  std::sort(key.begin(), key.end());
+  const std::vector<std::size_t> order = morton_order(x);
   vertex_to_new.resize(x.size());
-  for(std::size_t i = 0; i < key.size(); ++i) vertex_to_new[std::size_t(key[i].second)] = int(i);
+  for(std::size_t i = 0; i < order.size(); ++i) vertex_to_new[order[i]] = int(i);
   std::vector<std::pair<int, int> > first(tets.size());
   for(std::size_t t = 0; t < tets.size(); ++t) {
     int m = vertex_to_new[std::size_t(tets[t][0])];
