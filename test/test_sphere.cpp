@@ -1070,6 +1070,20 @@ TEST(Sphere_flow, SweepPartitionSeparatesTheInteriors)
   EXPECT_LT(part.separator.size(), n / 8) << "the regions are not compact";
 }
 
+namespace {
+
+/// The sphere problem of `m` (targets from its areas) and the library's
+/// certified Tutte start; false if either fails.
+bool certified_tutte_start(const Index_mesh& m, D::Sphere_problem& P, std::vector<V3>& start)
+{
+  P.xyz = m.xyz;
+  P.faces = m.faces;
+  return D::validate_sphere_geometry(P, {}).ok() &&
+         D::certified_sphere_initial_map<D::Default_spd_solver>(P, start, false).certified;
+}
+
+} // namespace
+
 // The sweeps of a large mesh, run on the partition: whatever the number of
 // threads, the same points to the last bit; every sweep lowers the energy,
 // keeps every face positive by the exact predicate and leaves the areas
@@ -1078,11 +1092,8 @@ TEST(Sphere_flow, PartitionedSweepsDoNotDependOnTheThreads)
 {
   const Index_mesh m = index_mesh(read_sphere_mesh("bunny00"));
   D::Sphere_problem P;
-  P.xyz = m.xyz;
-  P.faces = m.faces;
-  ASSERT_TRUE(D::validate_sphere_geometry(P, {}).ok());
   std::vector<V3> start;
-  ASSERT_TRUE(D::certified_sphere_initial_map<D::Default_spd_solver>(P, start, false).certified);
+  ASSERT_TRUE(certified_tutte_start(m, P, start));
   const D::Weighted_area_energy energy(P.target, 0.5);
   const D::Vertex_faces around(start.size(), P.faces);
   const D::Sweep_partition part(P.xyz, P.faces, 8);
@@ -1122,11 +1133,8 @@ TEST(Sphere_flow, LargeMeshPathMeetsTheGoalsOnAnyNumberOfThreads)
 {
   const Index_mesh m = index_mesh(read_sphere_mesh("homer"));
   D::Sphere_problem P;
-  P.xyz = m.xyz;
-  P.faces = m.faces;
-  ASSERT_TRUE(D::validate_sphere_geometry(P, {}).ok());
   std::vector<V3> start;
-  ASSERT_TRUE(D::certified_sphere_initial_map<D::Default_spd_solver>(P, start, false).certified);
+  ASSERT_TRUE(certified_tutte_start(m, P, start));
   D::Sphere_flow_settings settings;
   settings.large_from = 0;
   std::vector<std::vector<V3> > result;
