@@ -157,6 +157,32 @@ TEST(Volume, CubeGridIntoBallIsCertifiedAndVolumePreserving)
   EXPECT_LT(R.final_d_vol, R.initial_d_vol);
 }
 
+// A trial step the exact orient3d check refuses is counted and halved, and
+// the flow still ends certified. Such refusals need rounding at the level of
+// a tet's last bits; the test seam forces them in both modes instead.
+TEST(Volume, RefusalsOfTheExactCheckAreCountedAndHalved)
+{
+  const Tet_mesh m = full_grid(6, 0.2);
+  const std::size_t forced = 3;
+  for(const SMP::Discrete_lie_flow_mode mode : { SMP::Discrete_lie_flow_mode::CERTIFIED, SMP::Discrete_lie_flow_mode::PAPER }) {
+    SCOPED_TRACE(mode == SMP::Discrete_lie_flow_mode::PAPER ? "paper mode" : "certified mode");
+    SMP::Discrete_lie_flow_volume_options o;
+    o.mode = mode;
+    std::size_t rejected[2] = { 0, 0 };
+    for(int k = 0; k < 2; ++k) {
+      SMP::internal::dlf::forced_trial_refusals() = k ? forced : 0;
+      SMP::Discrete_lie_flow_volume_parameterizer_3<> dlf(o);
+      std::vector<Point> x;
+      ASSERT_EQ(dlf.parameterize(m.points, m.tets, x), SMP::OK) << dlf.report().message;
+      EXPECT_EQ(SMP::internal::dlf::forced_trial_refusals().load(), 0u) << "the exact check was skipped";
+      EXPECT_EQ(dlf.report().inverted_tets + dlf.report().flat_tets, 0u);
+      rejected[k] = dlf.report().rejected_by_exact_check;
+    }
+    EXPECT_GE(rejected[1], rejected[0] + forced);
+  }
+  SMP::internal::dlf::forced_trial_refusals() = 0;
+}
+
 TEST(Volume, StarShapedImageVolumeApproachesTheBallAsTheBorderIsRefined)
 {
   // With the border kept star-shaped the image is a polytope inscribed in

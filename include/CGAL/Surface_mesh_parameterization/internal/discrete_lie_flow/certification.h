@@ -11,6 +11,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/geometry.h>
 
 #include <array>
+#include <atomic>
 #include <cstddef>
 #include <vector>
 
@@ -71,6 +72,39 @@ inline Orientation_count count_orientations_sphere(const std::vector<Vec3>& p, c
                                                    bool stop_at_first = false)
 {
   return count_orientations(p, faces, &exact_orientation_sphere, stop_at_first);
+}
+
+/// Test seam: the next `n` trial steps that reach the exact check are refused
+/// whatever their map (`forced_trial_refusals() = n`). The flows' refusal path
+/// (count the refusal, halve the step, go on) is otherwise reached only by a
+/// rounding event at the level of a triangle's last bits, which no input can
+/// be built to produce on every floating-point kernel. 0 outside tests.
+inline std::atomic<std::size_t>& forced_trial_refusals()
+{
+  static std::atomic<std::size_t> n{0};
+  return n;
+}
+
+/// Takes one forced refusal if any is left (thread-safe: the volume's checks
+/// may run concurrently).
+inline bool take_forced_trial_refusal()
+{
+  std::atomic<std::size_t>& n = forced_trial_refusals();
+  std::size_t k = n.load(std::memory_order_relaxed);
+  while(k > 0 && !n.compare_exchange_weak(k, k - 1, std::memory_order_relaxed)) {}
+  return k > 0;
+}
+
+/// The last word on a flow's trial step in the plane: every face positive.
+inline bool certified_trial_2(const std::vector<Vec2>& uv, const std::vector<Face>& faces)
+{
+  return !take_forced_trial_refusal() && count_orientations_2(uv, faces, true).all_positive();
+}
+
+/// The last word on a flow's trial step on the sphere: every face positive.
+inline bool certified_trial_sphere(const std::vector<Vec3>& p, const std::vector<Face>& faces)
+{
+  return !take_forced_trial_refusal() && count_orientations_sphere(p, faces, true).all_positive();
 }
 
 } // namespace dlf

@@ -180,7 +180,7 @@ public:
       if(m_log_opening ? !(m_E_trial <= m_E && m_log_energy.value(m_u_trial) <= m_L + 1e-4 * step.lambda * m_slope)
                        : !(m_E_trial <= m_E + 1e-4 * step.lambda * m_slope))
         continue;
-      if(!count_orientations_2(m_trial, m_P.faces, true).all_positive()) { ++out.rejected_by_exact_check; continue; }
+      if(!certified_trial_2(m_trial, m_P.faces)) { ++out.rejected_by_exact_check; continue; }
       step.accepted = true;
       return;
     }

@@ -292,7 +292,7 @@ private:
 
   bool certified(Flow_outcome& out)
   {
-    if(count_orientations_2(m_trial, m_tri.faces, true).all_positive()) return true;
+    if(certified_trial_2(m_trial, m_tri.faces)) return true;
     ++out.rejected_by_exact_check;
     return false;
   }

@@ -306,7 +306,7 @@ public:
                                        m_p[v][2] + step.lambda * m_d[v][2] }});
       m_E_trial = evaluate(m_trial, m_u_trial, m_w_trial);
       if(!(m_E_trial <= m_E + 1e-4 * step.lambda * m_slope)) continue;
-      if(!count_orientations_sphere(m_trial, m_P.faces, true).all_positive()) { ++out.rejected_by_exact_check; continue; }
+      if(!certified_trial_sphere(m_trial, m_P.faces)) { ++out.rejected_by_exact_check; continue; }
       step.accepted = true;
       return;
     }

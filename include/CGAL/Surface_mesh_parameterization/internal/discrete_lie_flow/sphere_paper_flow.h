@@ -134,7 +134,7 @@ public:
       for(std::size_t t = 0; t < m_u_trial.size() && ok; ++t)
         ok = (m_u_trial[t] / U_trial) >= (std::min)(m_opt.paper.degeneracy_ratio * (m_target[t] / T), 0.5 * (m_u[t] / U));
       if(!ok) continue;
-      if(!count_orientations_sphere(m_trial, m_tri.faces, true).all_positive()) { ++out.rejected_by_exact_check; continue; }
+      if(!certified_trial_sphere(m_trial, m_tri.faces)) { ++out.rejected_by_exact_check; continue; }
       accepted = true;
       break;
     }

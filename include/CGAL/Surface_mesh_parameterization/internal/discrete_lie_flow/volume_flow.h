@@ -14,6 +14,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_FLOW_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_FLOW_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certification.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow_driver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/morton_order.h>
@@ -341,7 +342,7 @@ public:
         dets(m_x_trial, m_u_trial);
         m_E_trial = m_energy.value(m_u_trial, 0);
         if(!(m_E_trial < m_E)) continue;
-        if(!all_positive(m_x_trial) ||
+        if(take_forced_trial_refusal() || !all_positive(m_x_trial) ||
            (m_S.star_shaped_border && count_bad_border_faces(m_x_trial, m_border_faces) != 0)) {
           ++out.rejected_by_exact_check;
           continue;

@@ -16,6 +16,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_PAPER_FLOW_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_PAPER_FLOW_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certification.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow_driver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/solver_threads.h>
@@ -278,7 +279,7 @@ public:
   /// m_trial certified by the exact predicate.
   bool certified() const
   {
-    return count_bad_tets(m_trial, m_tets).not_positive() == 0 &&
+    return !take_forced_trial_refusal() && count_bad_tets(m_trial, m_tets).not_positive() == 0 &&
            !(m_S.star_shaped_border && count_bad_border_faces(m_trial, m_border_faces) != 0);
   }
 
