@@ -25,9 +25,9 @@
 
 #include "benchmark_utilities.h"
 
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/solver_threads.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sobolev_direction.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/default_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/solver_threads.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/sobolev_direction.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh.h>

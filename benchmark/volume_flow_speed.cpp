@@ -19,7 +19,7 @@
 // flow (wall) and of the process (user CPU).
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_volume_3.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_medit.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume/volume_medit.h>
 
 #include <sys/resource.h>
 

@@ -6,7 +6,7 @@
 #include "surface_mesh.h"
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_density.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/distortion.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/distortion.h>
 
 #include <algorithm>
 #include <cmath>

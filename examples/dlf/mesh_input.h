@@ -7,7 +7,7 @@
 #ifndef DLF_CLI_MESH_INPUT_H
 #define DLF_CLI_MESH_INPUT_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/critical_step.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/critical_step.h>
 
 #include <array>
 #include <cstddef>

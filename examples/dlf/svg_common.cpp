@@ -3,7 +3,7 @@
 
 #include "svg_common.h"
 
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/distortion.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/distortion.h>
 
 #include <algorithm>
 #include <array>

@@ -5,7 +5,7 @@
 #include "svg_common.h"
 #include "text_buffer.h"
 
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/certification.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/certification.h>
 
 #include <algorithm>
 #include <array>

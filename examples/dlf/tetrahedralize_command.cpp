@@ -29,7 +29,7 @@ int tetrahedralize_command(const std::vector<std::string>&)
 #include "mesh_input.h"
 #include "output_files.h"
 
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_medit.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume/volume_medit.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>

@@ -13,7 +13,7 @@
 #include "svg_common.h"
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_volume_3.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_medit.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume/volume_medit.h>
 
 #include <boost/program_options.hpp>
 #include <nlohmann/json.hpp>
