@@ -78,7 +78,7 @@ rm -rf "$SRC"; mkdir -p "$SRC"
 # Not the CLI either: without its sources the test executable does not
 # depend on it (and the build of dlf_tests, not dlf_tests/fast, is the one
 # that tracks header dependencies).
-rm -f "$SRC"/examples/dlf/*.cpp
+rm -f "$SRC"/tools/dlf/*.cpp
 find "$SRC/test" -maxdepth 1 -name '*.cpp' | while read -r f; do
   keep=0; for s in "${SOURCES[@]}"; do [[ "$(basename "$f")" == "$s" ]] && keep=1; done
   ((keep)) || rm "$f"
