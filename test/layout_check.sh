@@ -3,7 +3,8 @@
 # internal/discrete_lie_flow/, at most 16 headers per folder, the wings
 # (disk/, sphere/, volume/) include only core/, flow/ and their own folder,
 # core/ includes only core/, flow/ only core/ and flow/, and nothing under
-# internal/ includes a public parameterizer header (*_3.h).
+# internal/ includes a public parameterizer header (*_3.h); doc/architecture.md
+# names every internal header.
 #   bash test/layout_check.sh [REPO]
 set -euo pipefail
 repo="${1:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}"
@@ -36,6 +37,12 @@ for h in "$dir"/*/*.h; do
   if grep -qE '#include <CGAL/Surface_mesh_parameterization/[A-Za-z_]+_3\.h>' "$h"; then
     bad "$folder/$(basename "$h") includes a public parameterizer header: $(grep -oE 'Surface_mesh_parameterization/[A-Za-z_]+_3\.h' "$h" | head -1)"
   fi
+done
+# doc/architecture.md names every internal header by its folder and name.
+arch="$repo/doc/architecture.md"
+for h in "$dir"/*/*.h; do
+  name=$(basename "$h")
+  grep -q "$name" "$arch" || bad "doc/architecture.md does not name $(basename "$(dirname "$h")")/$name"
 done
 count=$(ls "$dir"/*/*.h | wc -l)
 (( fail == 0 )) && echo "layout: $count internal headers in $(ls -d "$dir"/*/ | wc -l) folders, no include between wings"
