@@ -248,7 +248,7 @@ int volume_command(const std::vector<std::string>& args)
   }
   const bool in_place = !verbose && isatty(fileno(stdout));
   if(!quiet)
-    options.callback = [in_place, verbose](const D::Volume_iteration& I) {
+    options.callback = [in_place, verbose](const SMP::Discrete_lie_flow_volume_iteration& I) {
       if(!in_place && !verbose && I.iteration % 10 != 0) return true;
       std::printf("%s%s %4zu  step %.3g  %s %.6g  cg %zu  %.1f s%s", in_place ? "\r" : "",
                   I.untangling ? "untangle" : "flow", I.iteration, I.step, I.untangling ? "energy" : "d_vol", I.d_vol,

@@ -95,7 +95,7 @@ struct Discrete_lie_flow_volume_options
   /// Keep every iteration in the report's `history`.
   bool record_history = false;
   /// Called after every iteration (untangling and flow); false stops the run.
-  std::function<bool(const internal::dlf::Volume_iteration&)> callback;
+  std::function<bool(const Discrete_lie_flow_volume_iteration&)> callback;
 };
 
 /// \ingroup PkgDiscreteLieFlowOptions
@@ -148,7 +148,7 @@ struct Discrete_lie_flow_volume_report
   double seconds_untangle = 0; ///< the untangling
   double seconds_flow = 0;     ///< the flow
   double seconds_total = 0;    ///< the whole run
-  std::vector<internal::dlf::Volume_iteration> history; ///< with `record_history`
+  std::vector<Discrete_lie_flow_volume_iteration> history; ///< with `record_history`
   std::vector<double> volume_ratio; ///< r_t per tet of the result
 };
 

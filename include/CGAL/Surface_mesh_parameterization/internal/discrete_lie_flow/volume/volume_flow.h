@@ -14,6 +14,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_FLOW_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_FLOW_H
 
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/certification.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow/flow_driver.h>
@@ -43,20 +44,8 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace dlf {
 
-/// What one iteration of the volumetric flow did.
-struct Volume_iteration
-{
-  std::size_t iteration = 0;
-  double step = 0;           ///< the accepted step λ (1: the full Gauss–Newton step)
-  double critical_step = 0;  ///< the smallest critical step of the direction
-  int limiting_tet = -1;     ///< the tet (caller's index) of that step, −1 if none
-  double d_vol = 0;          ///< D_vol after the step (with ε > 0: the regularised energy)
-  double epsilon = 0;        ///< the untangling's ε, 0 in the certified flow
-  bool untangling = false;   ///< an iteration of the start's untangling (its polish at ε = 0 too)
-  std::size_t negative_tets = 0; ///< by the doubles, after the step (untangling)
-  std::size_t cg_iterations = 0;
-  double seconds = 0;        ///< since the flow started
-};
+/// One iteration of a volumetric flow, as callbacks and histories see it.
+typedef Discrete_lie_flow_volume_iteration Volume_iteration;
 
 /// Settings of one run of the engine.
 struct Volume_flow_settings
