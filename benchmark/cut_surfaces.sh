@@ -23,7 +23,7 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 BUILD_DIR="${BUILD_DIR:-build}"
-DLF="$BUILD_DIR/examples/dlf"
+DLF="$BUILD_DIR/tools/dlf"
 CUT="$BUILD_DIR/benchmark/cut_to_disk"
 BENCH="$BUILD_DIR/benchmark/dlf_benchmark"
 MESHES="${MESHES:-$BUILD_DIR/data/meshes}"

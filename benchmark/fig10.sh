@@ -8,10 +8,10 @@
 #
 #   benchmark/fig10.sh
 #
-# DLF (default build/examples/dlf).
+# DLF (default build/tools/dlf).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-DLF="${DLF:-build/examples/dlf}"
+DLF="${DLF:-build/tools/dlf}"
 [[ -x "$DLF" ]] || { echo "fig10: $DLF not built" >&2; exit 2; }
 export OMP_THREAD_LIMIT=1 OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1
 tmp="$(mktemp -d)"

@@ -9,10 +9,10 @@
 #   benchmark/fig14.sh                       # nefertiti
 #   MESH=mushroom BORDER=square benchmark/fig14.sh
 #
-# DLF (default build/examples/dlf) and MESHES (default build/data/meshes).
+# DLF (default build/tools/dlf) and MESHES (default build/data/meshes).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-DLF="${DLF:-build/examples/dlf}"
+DLF="${DLF:-build/tools/dlf}"
 MESHES="${MESHES:-build/data/meshes}"
 MESH="${MESH:-nefertiti}"
 BORDER="${BORDER:-circle}"

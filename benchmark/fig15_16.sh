@@ -11,10 +11,10 @@
 #   benchmark/fig15_16.sh
 #   DISK=mushroom SPHERE=bear FACTORS="0.25 4 16" benchmark/fig15_16.sh
 #
-# DLF (default build/examples/dlf) and MESHES (default build/data/meshes).
+# DLF (default build/tools/dlf) and MESHES (default build/data/meshes).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-DLF="${DLF:-build/examples/dlf}"
+DLF="${DLF:-build/tools/dlf}"
 MESHES="${MESHES:-build/data/meshes}"
 DISK="${DISK:-nefertiti}"
 SPHERE="${SPHERE:-blobby}"

@@ -14,11 +14,11 @@
 #   benchmark/golden.sh                 # compare with benchmark/golden_table.txt
 #   benchmark/golden.sh --record        # write benchmark/golden_table.txt
 #
-# DLF (default build/examples/dlf) and MESHES (default build/data/meshes).
+# DLF (default build/tools/dlf) and MESHES (default build/data/meshes).
 # Exit status 1 when a row differs; the differing rows are printed.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-DLF="${DLF:-build/examples/dlf}"
+DLF="${DLF:-build/tools/dlf}"
 MESHES="${MESHES:-build/data/meshes}"
 GOLDEN=benchmark/golden_table.txt
 [[ -x "$DLF" ]] || { echo "golden: $DLF not built" >&2; exit 2; }

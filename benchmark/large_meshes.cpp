@@ -17,7 +17,7 @@
 // The ratio (seconds per iteration) / (one factorization + one solve) says
 // how close an iteration is to its floor.
 //
-//   large_meshes --dlf build/examples/dlf --work DIR mannequin-devil.off+loop2 ...
+//   large_meshes --dlf build/tools/dlf --work DIR mannequin-devil.off+loop2 ...
 //
 // benchmark/large_meshes.sh runs the sizes of doc/large_meshes.md.
 
@@ -25,9 +25,9 @@
 
 #include "benchmark_utilities.h"
 
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/solver_threads.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sobolev_direction.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/default_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/solver_threads.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/sobolev_direction.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh.h>
@@ -188,7 +188,7 @@ Floor measure_floor(const Mesh& mesh)
 int main(int argc, char** argv)
 {
   namespace po = boost::program_options;
-  std::string data_dir = DLF_DATA_DIR, dlf_path = "build/examples/dlf", work, json_path;
+  std::string data_dir = DLF_DATA_DIR, dlf_path = "build/tools/dlf", work, json_path;
   std::vector<std::string> specs;
   bool floor_only = false;
   po::options_description desc("large_meshes [options] SPEC...  (SPEC: name.off, name.off+loopK)");

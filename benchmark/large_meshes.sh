@@ -7,13 +7,13 @@
 #   benchmark/large_meshes.sh                  # all sizes (about half an hour on 2 cores)
 #   benchmark/large_meshes.sh SPEC...          # some, e.g. mannequin-devil.off+loop2
 #
-# DLF (default build/examples/dlf), BENCH (default build/benchmark/large_meshes),
+# DLF (default build/tools/dlf), BENCH (default build/benchmark/large_meshes),
 # DATA (default build/data, with meshes/), WORK (default: a temporary
 # directory, removed after; the subdivided meshes are written there),
 # JSON (optional: every number).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-DLF="${DLF:-build/examples/dlf}"
+DLF="${DLF:-build/tools/dlf}"
 BENCH="${BENCH:-build/benchmark/large_meshes}"
 DATA="${DATA:-build/data}"
 [[ -x "$DLF" ]] || { echo "large_meshes: $DLF not built" >&2; exit 2; }

@@ -10,10 +10,10 @@
 #   FIXED="0.01" benchmark/literal.sh       # fewer fixed steps
 #   MAX_IT=2000 benchmark/literal.sh        # the paper's cap (default 500)
 #
-# DLF (default build/examples/dlf) and MESHES (default build/data/meshes).
+# DLF (default build/tools/dlf) and MESHES (default build/data/meshes).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-DLF="${DLF:-build/examples/dlf}"
+DLF="${DLF:-build/tools/dlf}"
 MESHES="${MESHES:-build/data/meshes}"
 FIXED="${FIXED:-0.1 0.01 0.001}"
 MAX_IT="${MAX_IT:-500}"

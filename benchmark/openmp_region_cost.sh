@@ -23,7 +23,7 @@ if [[ $# -gt 0 && "$1" != "--" ]]; then rounds="$1"; shift; fi
 [[ "${1:-}" == "--" ]] && shift
 [[ "${1:-}" == "dlf" ]] || { echo "usage: $0 [ROUNDS] -- dlf COMMAND ARGS..." >&2; exit 2; }
 shift
-DLF="$BUILD_DIR/examples/dlf"
+DLF="$BUILD_DIR/tools/dlf"
 [[ -x "$DLF" ]] || { echo "openmp_region_cost: build dlf first" >&2; exit 2; }
 command -v cc >/dev/null || { echo "openmp_region_cost: a C compiler (cc) is needed" >&2; exit 2; }
 [[ -x /usr/bin/time ]] || { echo "openmp_region_cost: /usr/bin/time is needed (Debian package 'time')" >&2; exit 2; }

@@ -34,7 +34,7 @@ rm -rf "$SCRATCH/corpus"  # deterministic: the same files again
 start=$(date +%s)
 PYTHONPATH="$PWD/$BUILD_DIR/python" /usr/bin/python3 -m discrete_lie_flow.study run "$SCRATCH/corpus" \
   --db "$SCRATCH/robustness.sqlite" --workers "$WORKERS" --timeout "$TIMEOUT" --memory-limit 4 \
-  --dlf "$BUILD_DIR/examples/dlf" --runner "$BUILD_DIR/benchmark/robustness_corpus" --every-config --check-outputs \
+  --dlf "$BUILD_DIR/tools/dlf" --runner "$BUILD_DIR/benchmark/robustness_corpus" --every-config --check-outputs \
   --config disk-certified@disk --config disk-paper@disk --config sphere@sphere --config dlf_api@api \
   --config cgal_iterative_authalic@disk --config cgal_arap@disk --config cgal_mvc@disk \
   -q || echo "robustness: dlf-study exited $? (rows not recorded are reported as missing below)"

@@ -7,13 +7,13 @@
 #
 #   benchmark/slits.sh            # one row per disk
 #
-# DLF (default build/examples/dlf), CUT (default build/benchmark/cut_to_disk)
+# DLF (default build/tools/dlf), CUT (default build/benchmark/cut_to_disk)
 # and MESHES (default build/data/meshes). Columns: faces, border vertices,
 # min angle (3D), status, stop reason, iterations, D_area, inverted faces
 # (exact predicate), whole process time.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-DLF="${DLF:-build/examples/dlf}"
+DLF="${DLF:-build/tools/dlf}"
 CUT="${CUT:-build/benchmark/cut_to_disk}"
 MESHES="${MESHES:-build/data/meshes}"
 [[ -x "$DLF" ]] || { echo "slits: $DLF not built" >&2; exit 2; }

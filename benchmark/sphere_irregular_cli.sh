@@ -13,7 +13,7 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 BUILD_DIR="${BUILD_DIR:-build}"
-DLF="$BUILD_DIR/examples/dlf"
+DLF="$BUILD_DIR/tools/dlf"
 BENCH="$BUILD_DIR/benchmark/sphere_benchmark"
 [[ -x "$DLF" && -x "$BENCH" ]] || { echo "sphere_irregular_cli: build dlf and sphere_benchmark first" >&2; exit 2; }
 [[ -x /usr/bin/time ]] || { echo "sphere_irregular_cli: /usr/bin/time is needed (Debian package 'time')" >&2; exit 2; }

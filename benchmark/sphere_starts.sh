@@ -8,10 +8,10 @@
 #
 #   benchmark/sphere_starts.sh
 #
-# DLF (default build/examples/dlf) and MESHES (default build/data/meshes).
+# DLF (default build/tools/dlf) and MESHES (default build/data/meshes).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-DLF="${DLF:-build/examples/dlf}"
+DLF="${DLF:-build/tools/dlf}"
 MESHES="${MESHES:-build/data/meshes}"
 DOC=doc/sphere.md
 [[ -x "$DLF" ]] || { echo "sphere_starts: $DLF not built" >&2; exit 2; }

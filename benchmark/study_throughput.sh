@@ -26,7 +26,7 @@ for n in ${ORDER:-1 2}; do
   echo "workers $n: load average $(cut -d' ' -f1-3 /proc/loadavg)"
   start=$(date +%s.%N)
   "$PY" -m discrete_lie_flow.study run "$data" --db "$db" --workers "$n" --timeout "$TIMEOUT" \
-    --dlf "$BUILD_DIR/examples/dlf" -q
+    --dlf "$BUILD_DIR/tools/dlf" -q
   end=$(date +%s.%N)
   seconds[$n]=$("$PY" -c "print($end - $start)")
   "$PY" - "$db" "$data" "${seconds[$n]}" <<'PYEOF'

@@ -5,7 +5,7 @@
 # seconds and peak memory). Writes a Markdown table to stdout and, with
 # DOC=1, into doc/volume.md between its GENERATED markers.
 #
-#   DLF=build/examples/dlf MESHES=build/data/meshes bash benchmark/volume.sh [TETS...]
+#   DLF=build/tools/dlf MESHES=build/data/meshes bash benchmark/volume.sh [TETS...]
 #
 # TETS: the --tets targets (default 20000). MESHLIST overrides the meshes,
 # TETRAHEDRALIZE adds options to `dlf tetrahedralize` (e.g. --facet-ratio 1),
@@ -26,7 +26,7 @@ if [ "${DOC:-0}" = 1 ]; then
   rm -f "$table"
   exit 0
 fi
-DLF=${DLF:-build/examples/dlf}
+DLF=${DLF:-build/tools/dlf}
 MESHES=${MESHES:-build/data/meshes}
 WORK=${WORK:-volume-work}
 MESHLIST=${MESHLIST:-"sphere bunny00 bear hand homer blobby bull triceratops diplodocus armadillo cactus dino tripod"}

@@ -19,7 +19,7 @@
 // flow (wall) and of the process (user CPU).
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_volume_3.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_medit.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume/volume_medit.h>
 
 #include <sys/resource.h>
 
@@ -97,7 +97,7 @@ int main(int argc, char** argv)
   std::vector<D::Vec3> x = start.points;
   if(D::count_bad_tets(x, in.tets).not_positive() != 0) { std::cerr << "the start is not certified\n"; return 1; }
   if(verbose)
-    S.callback = [](const D::Volume_iteration& I) {
+    S.callback = [](const SMP::Discrete_lie_flow_volume_iteration& I) {
       std::printf("it %4zu  D_vol %.6f  step %.3g  cg %3zu  %.2f s\n", I.iteration, I.d_vol, I.step,
                   I.cg_iterations, I.seconds);
       std::fflush(stdout);

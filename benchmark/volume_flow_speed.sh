@@ -7,7 +7,7 @@
 # (iterations, conjugate-gradient steps, D_vol, exact inverted count, wall
 # and user CPU seconds of the flow).
 #
-#   DLF=build/examples/dlf SPEED=build/benchmark/volume_flow_speed \
+#   DLF=build/tools/dlf SPEED=build/benchmark/volume_flow_speed \
 #     bash benchmark/volume_flow_speed.sh MESH.mesh
 #
 # MESH: a tetrahedral mesh (e.g. `dlf tetrahedralize bunny00.off --tets
@@ -15,7 +15,7 @@
 # the options of volume_flow_speed).
 set -eu
 mesh=$1
-DLF=${DLF:-build/examples/dlf}
+DLF=${DLF:-build/tools/dlf}
 SPEED=${SPEED:-build/benchmark/volume_flow_speed}
 WORK=${WORK:-volume-speed-work}
 mkdir -p "$WORK"

@@ -7,14 +7,14 @@
 # untangling seconds), the flow's iterations, D_vol, the stop and the whole
 # process's seconds, before (BASE) and after (DLF).
 #
-#   BASE=old/dlf DLF=build/examples/dlf bash benchmark/volume_start.sh A.mesh B.mesh ...
+#   BASE=old/dlf DLF=build/tools/dlf bash benchmark/volume_start.sh A.mesh B.mesh ...
 #
 # VOLUME_ARGS adds options to both runs (e.g. "--max-iterations 0": the
 # start alone). The .mesh files: `dlf tetrahedralize` (benchmark/volume.sh
 # keeps its meshes in its WORK directory).
 set -u
 BASE=${BASE:?the peer build of dlf}
-DLF=${DLF:-build/examples/dlf}
+DLF=${DLF:-build/tools/dlf}
 WORK=${WORK:-volume-start-work}
 mkdir -p "$WORK"
 echo "| mesh | tets | Tutte folds | untangle it. before | after | untangle s before | after | start s before | after | flow it. before | after | D_vol before | after | stop before | after | whole process s before | after |"

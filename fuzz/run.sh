@@ -23,8 +23,8 @@ mkdir -p "$BUILD_DIR/obj" "$BUILD_DIR/corpus" "$BUILD_DIR/artifacts" "$BUILD_DIR
 flags=(-std=c++17 -O1 -g -fno-omit-frame-pointer
        -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
        -fsanitize-recover=float-cast-overflow
-       -Iinclude -Iexamples/dlf -isystem /usr/include/eigen3 -DCGAL_EIGEN3_ENABLED)
-sources=(fuzz/dlf_fuzz.cpp examples/dlf/mesh_input.cpp)
+       -Iinclude -Itools/dlf -isystem /usr/include/eigen3 -DCGAL_EIGEN3_ENABLED)
+sources=(fuzz/dlf_fuzz.cpp tools/dlf/mesh_input.cpp)
 # Changed flags rebuild everything.
 if [[ "$(cat "$BUILD_DIR/flags" 2>/dev/null)" != "$CXX ${flags[*]}" ]]; then
   rm -f "$BUILD_DIR"/obj/*.o
@@ -35,7 +35,7 @@ for src in "${sources[@]}"; do
   obj="$BUILD_DIR/obj/$(basename "$src" .cpp).o"
   objects+=("$obj")
   # Rebuild when the source or any project header is newer than the object.
-  if [[ ! -f "$obj" || -n "$(find "$src" include examples/dlf -newer "$obj" \( -name '*.h' -o -path "$src" \) | head -1)" ]]; then
+  if [[ ! -f "$obj" || -n "$(find "$src" include tools/dlf -newer "$obj" \( -name '*.h' -o -path "$src" \) | head -1)" ]]; then
     echo "fuzz: compiling $src"
     nice -n 19 "$CXX" "${flags[@]}" -c "$src" -o "$obj"
   fi

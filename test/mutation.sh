@@ -28,23 +28,23 @@ INC=include/CGAL/Surface_mesh_parameterization
 DLF=$INC/internal/discrete_lie_flow
 # name | header | text | replacement
 MUTATIONS=(
-  "critical root of the quadratic with the wrong sign|$DLF/critical_step.h|take(q / a);|take(-q / a);"
-  "linear term of the signed-area quadratic with a wrong sign|$DLF/critical_step.h|ex * hy - ey * hx + gx * fy - gy * fx|ex * hy - ey * hx - gx * fy + gy * fx"
-  "exact certification dropped (every triangle counted positive)|$DLF/certification.h|if(o == CGAL::POSITIVE) continue;|continue;"
-  "area lumping skips a corner of every face|$DLF/area_elements.h|for(int k = 0; k < 3; ++k) out[faces[f][k]] += value[f] / 3;|for(int k = 0; k < 2; ++k) out[faces[f][k]] += value[f] / 3;"
-  "report's target areas lumped from the domain's areas instead of the targets|$DLF/disk_flow.h|lump_on_vertices(p.size(), out.domain_faces, out.domain_target, R.target_area);|lump_on_vertices(p.size(), out.domain_faces, u, R.target_area);"
-  "plateau test the wrong way round (every run stops early)|$DLF/flow_driver.h|back(m_rules.plateau_window) - x < m_rules.plateau_tolerance * (x - 1)|back(m_rules.plateau_window) - x > m_rules.plateau_tolerance * (x - 1)"
-  "paper mode keeps the targets of flipped faces (no retargeting)|$DLF/planar_paper_flow.h|m_target[std::size_t(f)] = m_targets(m_tri.faces[std::size_t(f)]); }|(void)f; }"
+  "critical root of the quadratic with the wrong sign|$DLF/core/critical_step.h|take(q / a);|take(-q / a);"
+  "linear term of the signed-area quadratic with a wrong sign|$DLF/core/critical_step.h|ex * hy - ey * hx + gx * fy - gy * fx|ex * hy - ey * hx - gx * fy + gy * fx"
+  "exact certification dropped (every triangle counted positive)|$DLF/core/certification.h|if(o == CGAL::POSITIVE) continue;|continue;"
+  "area lumping skips a corner of every face|$DLF/core/area_elements.h|for(int k = 0; k < 3; ++k) out[faces[f][k]] += value[f] / 3;|for(int k = 0; k < 2; ++k) out[faces[f][k]] += value[f] / 3;"
+  "report's target areas lumped from the domain's areas instead of the targets|$DLF/disk/disk_flow.h|lump_on_vertices(p.size(), out.domain_faces, out.domain_target, R.target_area);|lump_on_vertices(p.size(), out.domain_faces, u, R.target_area);"
+  "plateau test the wrong way round (every run stops early)|$DLF/flow/flow_driver.h|back(m_rules.plateau_window) - x < m_rules.plateau_tolerance * (x - 1)|back(m_rules.plateau_window) - x > m_rules.plateau_tolerance * (x - 1)"
+  "paper mode keeps the targets of flipped faces (no retargeting)|$DLF/disk/planar_paper_flow.h|m_target[std::size_t(f)] = m_targets(m_tri.faces[std::size_t(f)]); }|(void)f; }"
   "density ignored (targets are the surface areas)|$INC/Discrete_lie_flow_parameterizer_3.h|P.target[f] = rho * a;|P.target[f] = a;"
-  "share error relative to the larger side (too lenient)|$DLF/density_levels.h|/ (std::min)(p, 1 - p);|/ (std::max)(p, 1 - p);"
-  "circle fitted 0.01% too large (border off the circle)|$DLF/boundary_curve.h|radius = r / double(pts.size());|radius = 1.0001 * r / double(pts.size());"
-  "inverted faces never counted in the metrics|$DLF/distortion.h|if(inverted) ++m.inverted_faces;|if(false) ++m.inverted_faces;"
-  "holes: the fill's targets almost nil (the holes shrink to nothing)|$DLF/disk_holes.h|P.target.push_back(rho * (std::max)(area, hole_fill_floor * area_g));|P.target.push_back(rho * 1e-6 * area_g);"
-  "holes: the fill oriented against the caller's faces|$DLF/disk_holes.h|P.faces.push_back(Face{{ a, b, c }});|P.faces.push_back(Face{{ b, a, c }});"
+  "share error relative to the larger side (too lenient)|$DLF/core/density_levels.h|/ (std::min)(p, 1 - p);|/ (std::max)(p, 1 - p);"
+  "circle fitted 0.01% too large (border off the circle)|$DLF/disk/boundary_curve.h|radius = r / double(pts.size());|radius = 1.0001 * r / double(pts.size());"
+  "inverted faces never counted in the metrics|$DLF/core/distortion.h|if(inverted) ++m.inverted_faces;|if(false) ++m.inverted_faces;"
+  "holes: the fill's targets almost nil (the holes shrink to nothing)|$DLF/disk/disk_holes.h|P.target.push_back(rho * (std::max)(area, hole_fill_floor * area_g));|P.target.push_back(rho * 1e-6 * area_g);"
+  "holes: the fill oriented against the caller's faces|$DLF/disk/disk_holes.h|P.faces.push_back(Face{{ a, b, c }});|P.faces.push_back(Face{{ b, a, c }});"
   "holes: the caller's start kept (no Tutte embedding of the filled disk)|$INC/Discrete_lie_flow_parameterizer_3.h|if(!D::filled_disk_tutte<|if(false && !D::filled_disk_tutte<"
-  "holes: the report counts the fill's faces|$DLF/disk_flow.h|R.faces = P.caller_faces();|R.faces = P.faces.size();"
-  "literal mode: the full critical step (no μ)|$DLF/literal_flow.h|: step_fraction(opt, literal_default_mu) * critical;|: critical;"
-  "literal mode: a folding step taken (no exact check)|$DLF/literal_flow.h|count_orientations_2(m_trial, m_tri.faces);|count_orientations_2(m_trial, std::vector<Face>());"
+  "holes: the report counts the fill's faces|$DLF/disk/disk_flow.h|R.faces = P.caller_faces();|R.faces = P.faces.size();"
+  "literal mode: the full critical step (no μ)|$DLF/flow/literal_rules.h|: step_fraction(opt, literal_default_mu) * critical;|: critical;"
+  "literal mode: a folding step taken (no exact check)|$DLF/disk/planar_literal_flow.h|count_orientations_2(m_trial, m_tri.faces);|count_orientations_2(m_trial, std::vector<Face>());"
 )
 
 # The fast subset: unit tests of the numerics, the area and share
@@ -78,7 +78,7 @@ rm -rf "$SRC"; mkdir -p "$SRC"
 # Not the CLI either: without its sources the test executable does not
 # depend on it (and the build of dlf_tests, not dlf_tests/fast, is the one
 # that tracks header dependencies).
-rm -f "$SRC"/examples/dlf/*.cpp
+rm -f "$SRC"/tools/dlf/*.cpp
 find "$SRC/test" -maxdepth 1 -name '*.cpp' | while read -r f; do
   keep=0; for s in "${SOURCES[@]}"; do [[ "$(basename "$f")" == "$s" ]] && keep=1; done
   ((keep)) || rm "$f"

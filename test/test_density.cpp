@@ -20,7 +20,7 @@
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_density.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/density_levels.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/density_levels.h>
 #include <CGAL/subdivision_method_3.h>
 
 #include <algorithm>

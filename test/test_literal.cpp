@@ -10,9 +10,9 @@
 #include <gtest/gtest.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/critical_step.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/critical_step.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/default_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/disk_flow.h>
 
 #include <Eigen/Dense>
 

@@ -10,8 +10,8 @@
 
 #include <gtest/gtest.h>
 
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/planar_certified_flow.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/planar_paper_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/planar_certified_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/planar_paper_flow.h>
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>

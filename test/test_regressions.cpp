@@ -9,8 +9,8 @@
 
 // The reader is part of the `dlf` tool, not of the library, and the test
 // executable does not link the tool's objects: compile it in.
-#include "../examples/dlf/mesh_input.cpp"
-#include "../examples/dlf/surface_mesh.h"
+#include "../tools/dlf/mesh_input.cpp"
+#include "../tools/dlf/surface_mesh.h"
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_parameterizer_3.h>
 

@@ -20,8 +20,8 @@
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/subdivision_method_3.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_sphere_3.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_certified_flow.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_spherical_area.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere/sphere_certified_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere/sphere_spherical_area.h>
 
 #include "../benchmark/irregular_meshes.h"
 

@@ -15,7 +15,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_sphere_3.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_edge_flips.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere/sphere_edge_flips.h>
 
 #include <algorithm>
 #include <array>

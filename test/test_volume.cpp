@@ -13,8 +13,8 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_volume_3.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_medit.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_untangle.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume/volume_medit.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume/volume_untangle.h>
 
 #include <algorithm>
 #include <array>

@@ -7,7 +7,7 @@
 #include <CGAL/license/Surface_mesh_parameterization.h>
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/distortion.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/distortion.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>

@@ -8,9 +8,9 @@
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_flow.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/mesh_properties.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/default_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/disk_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/mesh_properties.h>
 
 #include <CGAL/Surface_mesh_parameterization/Symmetric_barycentric_mapping_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>

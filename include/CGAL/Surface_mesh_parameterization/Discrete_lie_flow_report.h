@@ -161,6 +161,24 @@ struct Discrete_lie_flow_report
   std::size_t coarse_iterations = 0;
 };
 
+/// \ingroup PkgDiscreteLieFlowOptions
+/// What one iteration of the volumetric flow did (or of its start's
+/// untangling): passed to `Discrete_lie_flow_volume_options::callback` and
+/// kept in `Discrete_lie_flow_volume_report::history`.
+struct Discrete_lie_flow_volume_iteration
+{
+  std::size_t iteration = 0; ///< 1 for the first step
+  double step = 0;           ///< the accepted step λ (1: the full Gauss–Newton step)
+  double critical_step = 0;  ///< the smallest critical step of the direction
+  int limiting_tet = -1;     ///< the tet (caller's index) of that step, −1 if none
+  double d_vol = 0;          ///< D_vol after the step (with ε > 0: the regularised energy)
+  double epsilon = 0;        ///< the untangling's ε, 0 in the certified flow
+  bool untangling = false;   ///< an iteration of the start's untangling (its polish at ε = 0 too)
+  std::size_t negative_tets = 0; ///< by the doubles, after the step (untangling)
+  std::size_t cg_iterations = 0; ///< conjugate-gradient steps of this iteration's direction
+  double seconds = 0;        ///< since the flow started
+};
+
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
 

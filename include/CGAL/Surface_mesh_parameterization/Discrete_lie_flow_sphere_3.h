@@ -8,10 +8,10 @@
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk_flow.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/mesh_properties.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere_map.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/default_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/disk_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/mesh_properties.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere/sphere_map.h>
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/internal/kernel_traits.h>

@@ -8,11 +8,12 @@
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/default_solver.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_flow.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_mesh.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_paper_flow.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume_start.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_sphere_3.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/default_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume/volume_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume/volume_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume/volume_paper_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume/volume_start.h>
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 
@@ -94,7 +95,7 @@ struct Discrete_lie_flow_volume_options
   /// Keep every iteration in the report's `history`.
   bool record_history = false;
   /// Called after every iteration (untangling and flow); false stops the run.
-  std::function<bool(const internal::dlf::Volume_iteration&)> callback;
+  std::function<bool(const Discrete_lie_flow_volume_iteration&)> callback;
 };
 
 /// \ingroup PkgDiscreteLieFlowOptions
@@ -147,7 +148,7 @@ struct Discrete_lie_flow_volume_report
   double seconds_untangle = 0; ///< the untangling
   double seconds_flow = 0;     ///< the flow
   double seconds_total = 0;    ///< the whole run
-  std::vector<internal::dlf::Volume_iteration> history; ///< with `record_history`
+  std::vector<Discrete_lie_flow_volume_iteration> history; ///< with `record_history`
   std::vector<double> volume_ratio; ///< r_t per tet of the result
 };
 
@@ -328,8 +329,14 @@ private:
     }
     // The certified start.
     D::Volume_start_info start;
-    code = D::volume_start<typename Solver_traits::Solver>(xyz, tets, topo, target, O.border, O.untangle_max_iterations,
-                                                           O.callback, x, start, message);
+    const auto border_to_sphere = [&O](const D::Volume_border_mesh& border, auto sphere, Discrete_lie_flow_report& report) {
+      Discrete_lie_flow_sphere_parameterizer_3<D::Volume_border_mesh> flow(O.border);
+      const Error_code c = flow.parameterize(border, sphere);
+      report = flow.report();
+      return c;
+    };
+    code = D::volume_start<typename Solver_traits::Solver>(xyz, tets, topo, target, border_to_sphere,
+                                                           O.untangle_max_iterations, O.callback, x, start, message);
     R.border = start.border;
     R.start_negative_tets = start.tutte_negative_tets;
     R.start_flat_tets = start.tutte_flat_tets;

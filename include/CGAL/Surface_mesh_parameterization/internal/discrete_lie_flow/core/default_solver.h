@@ -1,0 +1,56 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The default sparse symmetric positive definite solver of the flows:
+// CHOLMOD's supernodal Cholesky factorisation when the package is built with
+// it (CGAL_DLF_USE_CHOLMOD), else Eigen's simplicial LDLᵀ.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_DEFAULT_SOLVER_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_DEFAULT_SOLVER_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/sparse_solver.h>
+
+#include <Eigen/SparseCholesky>
+#ifdef CGAL_DLF_USE_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace dlf {
+
+#ifdef CGAL_DLF_USE_CHOLMOD
+typedef Eigen::CholmodSupernodalLLT<Sparse_matrix, Eigen::Lower> Default_spd_solver;
+#else
+typedef Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Lower> Default_spd_solver;
+#endif
+
+/// Coarser supernodes for the repeated factorisations of a large mesh's
+/// matrices (to be called before the first one). CHOLMOD enters OpenMP
+/// regions per supernode and per update between supernodes, a system call
+/// each even on one thread; CHOLMOD's default amalgamation (nrelax 4, 16,
+/// 48) leaves the 96K-vertex stiffness of a scanned mesh with tens of
+/// thousands of them. Merging up to 16, 48, 128 columns (zrelax 0.8, 0.3,
+/// 0.1) factorised it 10% faster (doc/sphere.md, "Large irregular meshes:
+/// the cost of an iteration").
+/// Other solvers are left as they are.
+template <class Solver>
+void use_coarse_supernodes(Solver&) {}
+
+#ifdef CGAL_DLF_USE_CHOLMOD
+template <class Matrix, int UpLo>
+void use_coarse_supernodes(Eigen::CholmodSupernodalLLT<Matrix, UpLo>& solver)
+{
+  cholmod_common& c = solver.cholmod();
+  c.nrelax[0] = 16; c.nrelax[1] = 48; c.nrelax[2] = 128;
+  c.zrelax[0] = 0.8; c.zrelax[1] = 0.3; c.zrelax[2] = 0.1;
+}
+#endif
+
+} // namespace dlf
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,206 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The Medit `.mesh` format of tetrahedral meshes (what CGAL's Mesh_3 writes
+// with `CGAL::IO::output_to_medit`), read with errors that name the line, and
+// written back with the border triangles.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_MEDIT_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_MEDIT_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume/volume_mesh.h>
+
+#include <cctype>
+#include <cstdio>
+#include <cstdlib>
+#include <istream>
+#include <map>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace dlf {
+
+/// A tetrahedral mesh as a Medit file holds it (0-based indices here).
+struct Medit_tet_mesh
+{
+  std::vector<Vec3> points;
+  std::vector<int> point_refs;
+  std::vector<Tet> tets;
+  std::vector<int> tet_refs; ///< subdomain labels (Mesh_3: the subdomain index)
+};
+
+/// Reads a Medit `.mesh` file (ASCII). Sections other than Vertices and
+/// Tetrahedra are read and ignored when their record size is known
+/// (Triangles, Edges, Corners, ...). Returns false and sets `error` to
+/// "line N: ..." on the first problem.
+inline bool read_medit(std::istream& in, Medit_tet_mesh& mesh, std::string& error)
+{
+  mesh = Medit_tet_mesh();
+  std::string line;
+  std::size_t line_no = 0;
+  // Token stream with line numbers; '#' starts a comment.
+  std::vector<std::pair<std::string, std::size_t> > tokens;
+  while(std::getline(in, line)) {
+    ++line_no;
+    const std::size_t hash = line.find('#');
+    if(hash != std::string::npos) line.resize(hash);
+    std::istringstream ls(line);
+    std::string tok;
+    while(ls >> tok) tokens.emplace_back(tok, line_no);
+  }
+  std::size_t p = 0;
+  auto where = [&](std::size_t i) {
+    return "line " + std::to_string(i < tokens.size() ? tokens[i].second : line_no) + ": ";
+  };
+  auto fail = [&](std::size_t i, const std::string& what) { error = where(i) + what; return false; };
+  auto read_int = [&](long long& v, const std::string& what) {
+    if(p >= tokens.size()) return fail(p, "unexpected end of file, expected " + what);
+    const std::string& s = tokens[p].first;
+    char* end = nullptr;
+    v = std::strtoll(s.c_str(), &end, 10);
+    if(end == s.c_str() || *end != '\0') return fail(p, "expected " + what + ", found '" + s + "'");
+    ++p;
+    return true;
+  };
+  auto read_double = [&](double& v, const std::string& what) {
+    if(p >= tokens.size()) return fail(p, "unexpected end of file, expected " + what);
+    const std::string& s = tokens[p].first;
+    char* end = nullptr;
+    v = std::strtod(s.c_str(), &end);
+    if(end == s.c_str() || *end != '\0') return fail(p, "expected " + what + ", found '" + s + "'");
+    if(!std::isfinite(v)) return fail(p, what + " is not finite ('" + s + "')");
+    ++p;
+    return true;
+  };
+  static const std::map<std::string, int> skipped = {
+    { "Edges", 3 }, { "Triangles", 4 }, { "Quadrilaterals", 5 }, { "Hexahedra", 9 }, { "Prisms", 7 },
+    { "Corners", 1 }, { "RequiredVertices", 1 }, { "Ridges", 1 }, { "RequiredEdges", 1 },
+    { "RequiredTriangles", 1 }, { "Normals", 3 }, { "NormalAtVertices", 2 }, { "Tangents", 3 },
+    { "TangentAtVertices", 2 } };
+  bool have_version = false, have_vertices = false, have_tets = false, ended = false;
+  while(p < tokens.size() && !ended) {
+    const std::string key = tokens[p].first;
+    const std::size_t kp = p++;
+    long long n = 0;
+    if(key == "MeshVersionFormatted") {
+      if(!read_int(n, "the format version")) return false;
+      if(n != 1 && n != 2) return fail(kp, "MeshVersionFormatted " + std::to_string(n) + " is not supported (1 or 2)");
+      have_version = true;
+    } else if(key == "Dimension") {
+      if(!read_int(n, "the dimension")) return false;
+      if(n != 3) return fail(kp, "Dimension " + std::to_string(n) + ": a tetrahedral mesh needs 3");
+    } else if(key == "Vertices") {
+      if(have_vertices) return fail(kp, "a second Vertices section");
+      if(!read_int(n, "the number of vertices")) return false;
+      if(n < 0 || n > 2000000000LL) return fail(kp, "bad number of vertices " + std::to_string(n));
+      mesh.points.resize(std::size_t(n));
+      mesh.point_refs.resize(std::size_t(n));
+      for(long long i = 0; i < n; ++i) {
+        const std::string what = "vertex " + std::to_string(i + 1) + " of " + std::to_string(n);
+        for(int c = 0; c < 3; ++c)
+          if(!read_double(mesh.points[std::size_t(i)][std::size_t(c)], "coordinate " + std::to_string(c + 1) + " of " + what))
+            return false;
+        long long r = 0;
+        if(!read_int(r, "the reference of " + what)) return false;
+        mesh.point_refs[std::size_t(i)] = int(r);
+      }
+      have_vertices = true;
+    } else if(key == "Tetrahedra") {
+      if(have_tets) return fail(kp, "a second Tetrahedra section");
+      if(!have_vertices) return fail(kp, "Tetrahedra before Vertices");
+      if(!read_int(n, "the number of tetrahedra")) return false;
+      if(n < 0 || n > 2000000000LL) return fail(kp, "bad number of tetrahedra " + std::to_string(n));
+      mesh.tets.resize(std::size_t(n));
+      mesh.tet_refs.resize(std::size_t(n));
+      for(long long i = 0; i < n; ++i) {
+        const std::string what = "tetrahedron " + std::to_string(i + 1) + " of " + std::to_string(n);
+        for(int c = 0; c < 4; ++c) {
+          long long v = 0;
+          const std::size_t vp = p;
+          if(!read_int(v, "vertex index " + std::to_string(c + 1) + " of " + what)) return false;
+          if(v < 1 || v > (long long)mesh.points.size())
+            return fail(vp, what + " refers to vertex " + std::to_string(v) + ", out of range 1.." +
+                              std::to_string(mesh.points.size()));
+          mesh.tets[std::size_t(i)][std::size_t(c)] = int(v - 1);
+        }
+        long long r = 0;
+        if(!read_int(r, "the reference of " + what)) return false;
+        mesh.tet_refs[std::size_t(i)] = int(r);
+      }
+      have_tets = true;
+    } else if(key == "End") {
+      ended = true;
+    } else {
+      const auto it = skipped.find(key);
+      if(it == skipped.end()) return fail(kp, "unknown section '" + key + "'");
+      if(!read_int(n, "the number of " + key)) return false;
+      if(n < 0) return fail(kp, "bad number of " + key);
+      for(long long i = 0; i < n * it->second; ++i) {
+        double ignored;
+        if(!read_double(ignored, "entry " + std::to_string(i / it->second + 1) + " of " + key)) return false;
+      }
+    }
+  }
+  if(!have_version) return fail(0, "not a Medit mesh: no MeshVersionFormatted");
+  if(!have_vertices) return fail(p, "no Vertices section");
+  if(!have_tets) return fail(p, "no Tetrahedra section (a surface mesh? a volume map needs tetrahedra)");
+  return true;
+}
+
+/// Keeps only the vertices that some tet uses (CGAL's writer also lists the
+/// triangulation's vertices outside the complex), in their order; returns
+/// how many were dropped. `kept[i]` is the input index of output vertex i.
+inline std::size_t drop_unused_vertices(Medit_tet_mesh& mesh, std::vector<int>& kept)
+{
+  std::vector<int> renum(mesh.points.size(), -1);
+  for(const Tet& t : mesh.tets)
+    for(int v : t) renum[std::size_t(v)] = 0;
+  kept.clear();
+  for(std::size_t v = 0; v < renum.size(); ++v)
+    if(renum[v] == 0) { renum[v] = int(kept.size()); kept.push_back(int(v)); }
+  const std::size_t dropped = mesh.points.size() - kept.size();
+  if(dropped == 0) return 0;
+  std::vector<Vec3> points(kept.size());
+  std::vector<int> refs(kept.size());
+  for(std::size_t i = 0; i < kept.size(); ++i) {
+    points[i] = mesh.points[std::size_t(kept[i])];
+    refs[i] = mesh.point_refs[std::size_t(kept[i])];
+  }
+  mesh.points.swap(points);
+  mesh.point_refs.swap(refs);
+  for(Tet& t : mesh.tets)
+    for(int& v : t) v = renum[std::size_t(v)];
+  return dropped;
+}
+
+/// Writes a tetrahedral mesh as Medit (17 significant digits, so that the
+/// exact orientations survive a round trip), with its border triangles.
+inline void write_medit(std::ostream& out, const std::vector<Vec3>& points, const std::vector<Tet>& tets,
+                        const std::vector<int>& tet_refs, const std::vector<std::array<int, 3> >& border_faces)
+{
+  char buf[96];
+  out << "MeshVersionFormatted 1\nDimension 3\nVertices\n" << points.size() << '\n';
+  for(const Vec3& p : points) {
+    std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g 1\n", p[0], p[1], p[2]);
+    out << buf;
+  }
+  out << "Triangles\n" << border_faces.size() << '\n';
+  for(const auto& f : border_faces) out << f[0] + 1 << ' ' << f[1] + 1 << ' ' << f[2] + 1 << " 1\n";
+  out << "Tetrahedra\n" << tets.size() << '\n';
+  for(std::size_t t = 0; t < tets.size(); ++t)
+    out << tets[t][0] + 1 << ' ' << tets[t][1] + 1 << ' ' << tets[t][2] + 1 << ' ' << tets[t][3] + 1 << ' '
+        << (t < tet_refs.size() ? tet_refs[t] : 1) << '\n';
+  out << "End\n";
+}
+
+} // namespace dlf
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,62 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Reading the input mesh in the vertex and face order of the file, and the
+// checks that turn unsuitable input into one clear line.
+
+#ifndef DLF_CLI_MESH_INPUT_H
+#define DLF_CLI_MESH_INPUT_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/critical_step.h>
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace dlf_cli {
+
+typedef CGAL::Surface_mesh_parameterization::internal::dlf::Vec2 Vec2;
+typedef CGAL::Surface_mesh_parameterization::internal::dlf::Vec3 Vec3;
+typedef std::array<int, 3> Triangle;
+
+/// A triangle mesh as index arrays, in the order of the input file.
+struct Indexed_mesh
+{
+  std::vector<Vec3> xyz;
+  std::vector<Triangle> faces;
+};
+
+/// Reads any format CGAL reads (OFF, OBJ, PLY, STL, ...) into index arrays
+/// without reordering vertices or faces. Faces are re-oriented consistently
+/// only when the file's orientation is inconsistent. Throws `Cli_error` for a
+/// missing or unreadable file, an empty mesh, non-finite coordinates,
+/// non-triangle faces, unreferenced vertices, or non-manifold input.
+Indexed_mesh read_triangle_mesh(const std::string& path);
+
+/// The checks of `read_triangle_mesh()` on a mesh given as arrays (the
+/// Python module's input): throws `Cli_error` prefixed by `name`.
+Indexed_mesh checked_triangle_mesh(std::vector<Vec3> xyz, std::vector<std::vector<std::size_t> > polygons,
+                                   const std::string& name);
+
+/// A border loop: its vertices in walking order, from its smallest index.
+struct Border_loop
+{
+  std::vector<int> vertices;
+  double length = 0; ///< 3D length
+};
+
+/// The border loops of a manifold triangle mesh (orientation not needed),
+/// longest first by 3D length, ties by smallest vertex index: the order in
+/// which `dlf info` lists them and `dlf disk --outer-loop K` counts them from 0.
+std::vector<Border_loop> border_loops(const std::vector<Vec3>& xyz, const std::vector<Triangle>& faces);
+
+/// Throws `Cli_error` naming what was found (connected components, border
+/// loops, genus) unless `mesh` is a topological disk or a disk with holes
+/// (one component, genus 0, at least one border loop); returns its border
+/// loops, as `border_loops()` orders them.
+std::vector<Border_loop> check_disk_topology(const Indexed_mesh& mesh, const std::string& path);
+
+} // namespace dlf_cli
+
+#endif
