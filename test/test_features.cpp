@@ -768,7 +768,10 @@ TEST(Features, SolverThreadsAreSetForTheFlowAndRestored)
   typedef int (*Get)();
   const Set set = reinterpret_cast<Set>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
   const Get get = reinterpret_cast<Get>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
-  if(set == nullptr || get == nullptr) GTEST_SKIP() << "no OpenBLAS in this process";
+  if(set == nullptr || get == nullptr) {
+    if(std::getenv("DLF_REQUIRE_ALL")) FAIL() << "no OpenBLAS in this process (DLF_REQUIRE_ALL: may not skip)";
+    GTEST_SKIP() << "no OpenBLAS in this process";
+  }
   // CTest names the thread counts for every test; this one needs them unnamed.
   for(const char* v : { "OPENBLAS_NUM_THREADS", "GOTO_NUM_THREADS", "OMP_NUM_THREADS", "OMP_THREAD_LIMIT", "OMP_DYNAMIC",
                         "OMP_MAX_ACTIVE_LEVELS", "OMP_NESTED" })

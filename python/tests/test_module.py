@@ -14,6 +14,7 @@ import time
 
 import numpy as np
 import pytest
+from strict import missing_mesh
 
 import discrete_lie_flow as dlf
 
@@ -24,7 +25,7 @@ MESHES = os.path.join(os.environ.get("DLF_DATA_DIR", "build/data"), "meshes")
 def mesh_path(name):
     path = os.path.join(MESHES, name)
     if not os.path.exists(path):
-        pytest.skip(f"{path} missing (CGAL's data set)")
+        missing_mesh(path)
     return path
 
 

@@ -20,6 +20,7 @@ from pathlib import Path
 
 import psutil
 import pytest
+from strict import missing_mesh
 
 from discrete_lie_flow import study
 
@@ -38,7 +39,7 @@ def corpus(tmp_path_factory):
     for name in ("nefertiti.off", "sphere.off"):
         src = os.path.join(MESHES, name)
         if not os.path.exists(src):
-            pytest.skip(f"{src} missing (CGAL's data set)")
+            missing_mesh(src)
         shutil.copy(src, meshes / name)
     shutil.copy(meshes / "nefertiti.off", meshes / "crash.off")   # a disk: the disk runs crash
     shutil.copy(meshes / "sphere.off", meshes / "hang.off")       # a sphere: the sphere runs hang
@@ -367,7 +368,7 @@ def checked_corpus(tmp_path_factory):
     for name in ("nefertiti.off", "sphere.off"):
         src = os.path.join(MESHES, name)
         if not os.path.exists(src):
-            pytest.skip(f"{src} missing (CGAL's data set)")
+            missing_mesh(src)
         shutil.copy(src, corpus / name)
     for name in ("fold", "stray", "lie", "garble"):
         shutil.copy(corpus / "nefertiti.off", corpus / f"{name}.off")
