@@ -827,6 +827,48 @@ TEST(Features, SolverThreadsAreSetForTheFlowAndRestored)
   EXPECT_EQ(threads_during(0), 3);
 }
 
+// A run that stops short names each goal it missed with its value, and no
+// goal it met: lion-head stopped after one iteration misses D_area; the
+// sphere with D_area's goal out of the way (tolerance 10) and an unreachable
+// mean |log area ratio| (1e-9) misses only the latter. The message claims
+// fold-free input triangles only when the report counts none inverted.
+TEST(Features, NotConvergedMessageNamesTheMissedGoals)
+{
+  Loaded m;
+  load("lion-head", m);
+  UV_map uv = m.sm.add_property_map<SM_vertex, Point_2>("v:uv").first;
+  SMP::Discrete_lie_flow_options o;
+  o.max_iterations = 1;
+  Dlf disk(Dlf::Initial_parameterizer(), o);
+  ASSERT_EQ(SMP::parameterize(m.sm, disk, m.bhd, uv), SMP::OK) << disk.report().message;
+  const std::string& dm = disk.report().message;
+  ASSERT_FALSE(disk.report().converged());
+  EXPECT_NE(dm.find("short of d_area "), std::string::npos) << dm;
+  EXPECT_NE(dm.find(" > 2.01"), std::string::npos) << dm;
+  EXPECT_EQ(dm.find("mean |log"), std::string::npos) << dm;
+  EXPECT_NE(dm.find("fold-free on the input's triangles"), std::string::npos) << dm;
+
+  SM sphere;
+  {
+    std::ifstream in(std::string(DLF_DATA_DIR) + "/meshes/sphere.off");
+    ASSERT_TRUE(in && (in >> sphere));
+  }
+  auto p = sphere.add_property_map<SM_vertex, Point_3>("v:sphere").first;
+  SMP::Discrete_lie_flow_options so;
+  so.tolerance = 10;
+  so.sphere.log_area_tolerance = 1e-9;
+  so.max_iterations = 5;
+  const SMP::Discrete_lie_flow_report r = SMP::discrete_lie_flow_sphere(sphere, p, so);
+  ASSERT_EQ(r.status, SMP::OK) << r.message;
+  ASSERT_FALSE(r.converged()) << r.message;
+  EXPECT_NE(r.message.find("short of mean |log area ratio| "), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find(" > 1e-09"), std::string::npos) << r.message;
+  EXPECT_EQ(r.message.find("d_area 12"), std::string::npos) << r.message;
+  EXPECT_EQ(r.message.find("short of d_area"), std::string::npos) << r.message;
+  EXPECT_EQ(r.caller_inverted_faces, 0u);
+  EXPECT_NE(r.message.find("fold-free on the input's triangles"), std::string::npos) << r.message;
+}
+
 // A caller's own start onto a non-convex domain (the paper's Fig. 10): an
 // L-shaped grid, lifted to a bumpy surface, starts from its flat L. With
 // the border FREE the flow keeps the L: every border uv stays on the L's

@@ -755,7 +755,8 @@ TEST(Log_ratio_energy, CertifiedFlowWithAndWithoutTheOpening)
     for(const auto& h : out.history) { EXPECT_LE(h.d_area, prev); prev = h.d_area; }
     iterations[with] = out.iterations;
   }
-  std::printf("  mushroom: %zu iterations with the log opening, %zu without\n", iterations[1], iterations[0]);
+  // The opening may not cost iterations (8 → 5 here when measured).
+  EXPECT_LE(iterations[1], iterations[0]) << "with the log opening: " << iterations[1] << ", without: " << iterations[0];
 }
 
 // The sign of the paper's Poisson step, from the internals: L h = A_Ω − A_M

@@ -327,8 +327,9 @@ TEST(Sphere_paper_map, SphereAndEllipsoid)
 
 TEST(Sphere_paper_map, Blobby) { check_paper_map("blobby", 2.05); }
 // The paper's flow plateaus on the legs and horns: it must improve on the
-// start, certified; its figure is the benchmark's (doc/sphere_paper_mode.md).
-TEST(Sphere_paper_map, Cow) { check_paper_map("cow", std::numeric_limits<double>::infinity()); }
+// start (D_area 1.02e6), certified, to the benchmark's figure (10.04 on the
+// flowing triangulation, doc/sphere_paper_mode.md) within 10%.
+TEST(Sphere_paper_map, Cow) { check_paper_map("cow", 11.); }
 
 TEST(Sphere_paper_map, WithoutFlipsTheInputTriangulationFlows)
 {

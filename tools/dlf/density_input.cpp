@@ -1,6 +1,7 @@
 // Copyright (c) 2026 The Discrete Lie Flow authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
+#include "cli_util.h"
 #include "density_input.h"
 #include "cli_error.h"
 #include "surface_mesh.h"
@@ -24,7 +25,6 @@ namespace {
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 
-std::string quoted(const std::string& path) { return "'" + path + "'"; }
 
 std::string number(double x)
 {

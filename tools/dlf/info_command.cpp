@@ -6,6 +6,7 @@
 // refuses (non-manifold, polygons, unreferenced vertices) is described
 // rather than refused.
 
+#include "cli_util.h"
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
@@ -58,17 +59,6 @@ const char* info_help =
   "  dlf info face.off\n"
   "  dlf info scan.ply --report scan_info.json\n";
 
-struct Union_find
-{
-  std::vector<std::size_t> parent;
-  explicit Union_find(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), std::size_t(0)); }
-  std::size_t find(std::size_t i)
-  {
-    while(parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  }
-  void unite(std::size_t a, std::size_t b) { parent[find(a)] = find(b); }
-};
 
 struct Mesh_info
 {

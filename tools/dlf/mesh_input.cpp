@@ -1,6 +1,7 @@
 // Copyright (c) 2026 The Discrete Lie Flow authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
+#include "cli_util.h"
 #include "mesh_input.h"
 #include "cli_error.h"
 
@@ -28,10 +29,9 @@ namespace dlf_cli {
 
 namespace {
 
-typedef CGAL::Simple_cartesian<double>::Point_3 Point_3;
+typedef CGAL::Simple_cartesian<double>::Point_3 Soup_point;
 typedef std::vector<std::size_t> Polygon;
 
-std::string quoted(const std::string& path) { return "'" + path + "'"; }
 
 void check_triangles(const std::vector<Polygon>& polygons, const std::string& name)
 {
@@ -99,7 +99,7 @@ class Off_text_reader
 public:
   explicit Off_text_reader(const std::string& text) : m_text(text) {}
 
-  bool read(const std::string& path, std::vector<Point_3>& points, std::vector<Polygon>& polygons)
+  bool read(const std::string& path, std::vector<Soup_point>& points, std::vector<Polygon>& polygons)
   {
     skip_blanks_and_comments();
     const std::string keyword = word();
@@ -132,7 +132,7 @@ public:
       if(!line(values) || values.size() < (homogeneous ? 4u : 3u)) return false;
       const double w = homogeneous ? values[3] : 1.;
       if(w == 0) return false;
-      points.push_back(Point_3(values[0] / w, values[1] / w, values[2] / w));
+      points.push_back(Soup_point(values[0] / w, values[1] / w, values[2] / w));
     }
     polygons.reserve(std::size_t(nf));
     for(long long f = 0; f < nf; ++f) {
@@ -216,7 +216,7 @@ private:
   // face its size, its indices and a colour count followed by that many
   // floats (ignored). Every count is checked against the bytes left before
   // anything is allocated.
-  bool read_binary(const std::string& path, std::vector<Point_3>& points, std::vector<Polygon>& polygons)
+  bool read_binary(const std::string& path, std::vector<Soup_point>& points, std::vector<Polygon>& polygons)
   {
     std::size_t at = m_text.find('\n', m_pos);
     if(at == std::string::npos) return false;
@@ -246,7 +246,7 @@ private:
         if(!word32(u)) return false;
         std::memcpy(&x, &u, sizeof x);
       }
-      points.push_back(Point_3(c[0], c[1], c[2]));
+      points.push_back(Soup_point(c[0], c[1], c[2]));
     }
     polygons.reserve(std::size_t(nf));
     for(long long f = 0; f < nf; ++f) {
@@ -277,7 +277,7 @@ private:
   std::size_t m_pos = 0;
 };
 
-bool read_off_soup(const std::string& path, std::vector<Point_3>& points, std::vector<Polygon>& polygons)
+bool read_off_soup(const std::string& path, std::vector<Soup_point>& points, std::vector<Polygon>& polygons)
 {
   std::ifstream in(path, std::ios::binary);
   std::string text;
@@ -349,18 +349,6 @@ bool is_oriented_manifold(std::size_t n, const std::vector<Polygon>& triangles)
   return true;
 }
 
-// A tiny union-find over vertex indices, for counting connected components.
-struct Union_find
-{
-  std::vector<std::size_t> parent;
-  explicit Union_find(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), std::size_t(0)); }
-  std::size_t find(std::size_t i)
-  {
-    while(parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  }
-  void unite(std::size_t a, std::size_t b) { parent[find(a)] = find(b); }
-};
 
 } // namespace
 
@@ -369,7 +357,7 @@ Indexed_mesh read_triangle_mesh(const std::string& path)
   if(!std::ifstream(path))
     throw Cli_error(quoted(path) + ": cannot open (no such file, or not readable)");
 
-  std::vector<Point_3> points;
+  std::vector<Soup_point> points;
   std::vector<Polygon> polygons;
   // The soup reader, not PMP::IO::read_polygon_mesh(): the latter's repair
   // step merges duplicate points and drops isolated ones, which renumbers
@@ -378,7 +366,7 @@ Indexed_mesh read_triangle_mesh(const std::string& path)
     throw Cli_error(quoted(path) + ": cannot read as a mesh (CGAL reads .off, .obj, .ply, .stl, .ts, .vtp)");
   std::vector<Vec3> xyz;
   xyz.reserve(points.size());
-  for(const Point_3& p : points) xyz.push_back({{ p.x(), p.y(), p.z() }});
+  for(const Soup_point& p : points) xyz.push_back({{ p.x(), p.y(), p.z() }});
   return checked_triangle_mesh(std::move(xyz), std::move(polygons), quoted(path));
 }
 
@@ -402,7 +390,7 @@ Indexed_mesh checked_triangle_mesh(std::vector<Vec3> xyz, std::vector<std::vecto
     // Only an inconsistently oriented mesh gets here; orienting flips some
     // faces but keeps the order, unless it must duplicate non-manifold
     // vertices, which would renumber.
-    std::vector<Point_3> points;
+    std::vector<Soup_point> points;
     points.reserve(xyz.size());
     for(const Vec3& p : xyz) points.emplace_back(p[0], p[1], p[2]);
     const std::size_t n = points.size(), mesh_faces = polygons.size();

@@ -1,6 +1,7 @@
 // Copyright (c) 2026 The Discrete Lie Flow authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
+#include "cli_util.h"
 #include "seam_input.h"
 #include "cli_error.h"
 
@@ -20,7 +21,6 @@ namespace dlf_cli {
 
 namespace {
 
-std::string quoted(const std::string& path) { return "'" + path + "'"; }
 
 // The face on the left of each directed edge a -> b (the mesh is manifold
 // and consistently oriented, read_triangle_mesh()).

@@ -30,7 +30,7 @@ struct Panel
   }
 };
 
-std::string number(double x)
+std::string plot_number(double x)
 {
   char buffer[32];
   std::snprintf(buffer, sizeof(buffer), "%g", x);
@@ -64,7 +64,7 @@ void x_ticks(std::ostream& out, const Panel& p, const std::vector<double>& value
     const double x = p.px(v);
     out << "<line x1=\"" << x << "\" y1=\"" << p.y + p.h << "\" x2=\"" << x << "\" y2=\"" << p.y + p.h + 5
         << "\" stroke=\"#444\"/><text x=\"" << x << "\" y=\"" << p.y + p.h + 18 << "\" text-anchor=\"middle\">"
-        << (integer ? number(std::round(v)) : number(v)) << "</text>\n";
+        << (integer ? plot_number(std::round(v)) : plot_number(v)) << "</text>\n";
   }
 }
 
@@ -82,7 +82,7 @@ void log_panel(std::ostream& out, const Panel& p, const std::vector<double>& xs,
     const double y = p.py(target);
     out << "<line x1=\"" << p.x << "\" y1=\"" << y << "\" x2=\"" << p.x + p.w << "\" y2=\"" << y
         << "\" stroke=\"#444\" stroke-dasharray=\"5,4\"/><text x=\"" << p.x + 6 << "\" y=\"" << y - 5
-        << "\">tolerance " << number(target) << "</text>\n";
+        << "\">tolerance " << plot_number(target) << "</text>\n";
   }
   if(xs.empty()) {
     out << "<text x=\"" << p.x + p.w / 2 << "\" y=\"" << p.y + p.h / 2 << "\" text-anchor=\"middle\">no iteration</text>\n";
@@ -192,7 +192,7 @@ void write_log_ratio_histogram(std::ostream& out, const std::vector<double>& bef
       const double ty = p.py(t);
       out << "<line x1=\"" << p.x - 5 << "\" y1=\"" << ty << "\" x2=\"" << p.x << "\" y2=\"" << ty
           << "\" stroke=\"#444\"/><text x=\"" << p.x - 8 << "\" y=\"" << ty + 4 << "\" text-anchor=\"end\">"
-          << number(std::round(t)) << "</text>\n";
+          << plot_number(std::round(t)) << "</text>\n";
     }
     // Bars in the colours of the layout picture: the same scale of ratios.
     for(int i = 0; i < bins; ++i) {

@@ -11,8 +11,8 @@ namespace dlf_cli {
 
 namespace {
 
-const double radius = 300, margin = 20, top = 44, legend_width = 150;
-const std::string black = "#000000";
+const double disc_radius = 300, disc_margin = 20, disc_top = 44, disc_legend_width = 150;
+const std::string fold_colour = "#000000";
 
 } // namespace
 
@@ -20,14 +20,14 @@ void write_svg_sphere(std::ostream& out, const Indexed_mesh& mesh, const std::ve
                       const std::string& caption)
 {
   const std::vector<double> log_ratio = face_log_area_ratios(mesh, sphere, std::vector<double>());
-  const double cy = top + 20 + radius;
-  const double cx[2] = { margin + radius, 3 * margin + 3 * radius };
-  const double width = 4 * margin + 4 * radius + legend_width, height = cy + radius + 30;
+  const double cy = disc_top + 20 + disc_radius;
+  const double cx[2] = { disc_margin + disc_radius, 3 * disc_margin + 3 * disc_radius };
+  const double width = 4 * disc_margin + 4 * disc_radius + disc_legend_width, height = cy + disc_radius + 30;
   write_svg_header(out, width, height, caption);
   const char* names[2] = { "seen from +z", "seen from −z" };
   for(int k = 0; k < 2; ++k)
-    out << "<circle cx=\"" << cx[k] << "\" cy=\"" << cy << "\" r=\"" << radius
-        << "\" fill=\"#eee\" stroke=\"#444\"/><text x=\"" << cx[k] << "\" y=\"" << top + 8
+    out << "<circle cx=\"" << cx[k] << "\" cy=\"" << cy << "\" r=\"" << disc_radius
+        << "\" fill=\"#eee\" stroke=\"#444\"/><text x=\"" << cx[k] << "\" y=\"" << disc_top + 8
         << "\" text-anchor=\"middle\">" << names[k] << "</text>\n";
 
   bool has_bad_faces = false;
@@ -44,17 +44,17 @@ void write_svg_sphere(std::ostream& out, const Indexed_mesh& mesh, const std::ve
       const double mirror = view == 0 ? 1 : -1;
       const bool bad = !std::isfinite(log_ratio[f]);
       has_bad_faces = has_bad_faces || bad;
-      const std::string& colour = bad ? black : colour_of_log_ratio(log_ratio[f]);
+      const std::string& colour = bad ? fold_colour : colour_of_log_ratio(log_ratio[f]);
       text << "<polygon points=\"";
       for(int k = 0; k < 3; ++k) {
-        text.fixed2(cx[view] + mirror * sphere[t[k]][0] * radius) << ',';
-        text.fixed2(cy - sphere[t[k]][1] * radius) << (k < 2 ? " " : "");
+        text.fixed2(cx[view] + mirror * sphere[t[k]][0] * disc_radius) << ',';
+        text.fixed2(cy - sphere[t[k]][1] * disc_radius) << (k < 2 ? " " : "");
       }
       text << "\" fill=\"" << colour << "\" stroke=\"" << colour << "\"/>\n";
     }
     text << "</g>\n";
   }
-  write_colour_bar(out, 4 * margin + 4 * radius + 10, top + 40, 240, has_bad_faces, false);
+  write_colour_bar(out, 4 * disc_margin + 4 * disc_radius + 10, disc_top + 40, 240, has_bad_faces, false);
   out << "</svg>\n";
 }
 

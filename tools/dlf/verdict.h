@@ -51,9 +51,8 @@ inline std::string not_converged_hint(CGAL::Surface_mesh_parameterization::Discr
 inline int exit_code_of_ok_run(const CGAL::Surface_mesh_parameterization::Discrete_lie_flow_report& R, bool disk)
 {
   if(R.converged()) return EXIT_OK;
-  std::cerr << "dlf: warning: " << R.message << " (the goal is d_area <= 2 + tolerance"
-            << (R.final_share_error > 0 ? " and every share within the share tolerance" : "") << "); "
-            << not_converged_hint(R.stop_reason, disk) << "\n";
+  // The message names the goals that were missed and their values.
+  std::cerr << "dlf: warning: " << R.message << "; " << not_converged_hint(R.stop_reason, disk) << "\n";
   return EXIT_NOT_CONVERGED;
 }
 

@@ -79,10 +79,35 @@ inline Error_code report_failure(Discrete_lie_flow_report& R, int code, const st
   return Error_code(code);
 }
 
-/// The verdict of a run whose report is filled: a triangulation the flow
-/// left non-positive (cannot happen: every accepted step and every flip is
-/// certified), a flow that could not improve its start, or success.
-inline Error_code report_verdict(const Flow_outcome& out, Discrete_lie_flow_report& R)
+/// The goals a run is judged by and the values it reached: a run that did
+/// not converge names each goal it missed with its value.
+struct Flow_goals
+{
+  double d_area = 0, d_area_goal = 0;       ///< D_area ≤ 2 + tolerance
+  double share_error = 0, share_goal = -1;  ///< with a density (goal ≥ 0) only
+  double mean_log = 0, mean_log_goal = -1;  ///< the sphere's mean |log area ratio| (goal > 0) only
+};
+
+/// "d_area 2.03 > 2.01; ..." for each goal of `g` not met, empty if none.
+inline std::string missed_goals(const Flow_goals& g)
+{
+  std::ostringstream s;
+  s << std::setprecision(6);
+  const char* sep = "";
+  if(!(g.d_area <= g.d_area_goal)) { s << "d_area " << g.d_area << " > " << g.d_area_goal; sep = "; "; }
+  if(g.share_goal >= 0 && !(g.share_error <= g.share_goal)) {
+    s << sep << "share error " << g.share_error << " > " << g.share_goal; sep = "; ";
+  }
+  if(g.mean_log_goal > 0 && !(g.mean_log <= g.mean_log_goal))
+    s << sep << "mean |log area ratio| " << g.mean_log << " > " << g.mean_log_goal;
+  return s.str();
+}
+
+/// The status and message of a run that produced a map: OK, converged or
+/// not. A run that stopped short says where, which goals it missed (with
+/// their values), and whether the caller's triangles are fold-free (in the
+/// paper and literal modes only the flowing triangulation is certified).
+inline Error_code report_verdict(const Flow_outcome& out, Discrete_lie_flow_report& R, const Flow_goals& goals)
 {
   if(R.flowing_inverted_faces != 0)
     return report_failure(R, ERROR_NO_1_TO_1_MAPPING, "the flow produced " + std::to_string(R.flowing_inverted_faces) +
@@ -91,20 +116,27 @@ inline Error_code report_verdict(const Flow_outcome& out, Discrete_lie_flow_repo
     return report_failure(R, ERROR_FLOW_STALLED, out.solver_failed ? "the linear solver failed on the initial map"
                                                                    : "no step improves the initial map");
   R.status = OK;
+  const std::string folds = R.caller_inverted_faces == 0
+    ? std::string("fold-free on the input's triangles")
+    : std::to_string(R.caller_inverted_faces) + " of the input's triangles inverted or degenerate (only the flowing "
+      "triangulation is certified in this mode)";
   if(out.stop_reason == Discrete_lie_flow_stop_reason::CONVERGED) {
-    R.message = "Success";
+    R.message = R.caller_inverted_faces == 0 ? std::string("Success") : "converged; " + folds;
   } else if(out.stop_reason == Discrete_lie_flow_stop_reason::COLLAPSED) {
     // The literal mode's documented failure (the paper's "c").
     std::ostringstream s;
     s << std::setprecision(6) << "collapsed: the step of iteration " << out.iterations + 1 << " "
       << (out.collapse_faces > 0 ? "folds or degenerates " + std::to_string(out.collapse_faces) + " faces of the flowing mesh"
                                  : std::string("no longer moves the mesh (or runs a border vertex off its side)"))
-      << "; the last fold-free iterate is returned, d_area " << out.final_d_area;
+      << "; the last fold-free iterate is returned, d_area " << R.final_d_area << ", " << folds;
     R.message = s.str();
   } else {
+    const std::string missed = missed_goals(goals);
     std::ostringstream s;
-    s << std::setprecision(6) << "not converged: a valid, fold-free map, stopped (" << discrete_lie_flow_stop_reason_name(out.stop_reason)
-      << ") after " << out.iterations << " iterations at d_area " << out.final_d_area;
+    s << std::setprecision(6) << "not converged: stopped (" << discrete_lie_flow_stop_reason_name(out.stop_reason)
+      << ") after " << out.iterations << " iterations short of "
+      << (missed.empty() ? std::string("the flow's own stop rule") : missed) << "; the map is " << folds
+      << ", d_area " << R.final_d_area;
     R.message = s.str();
   }
   return OK;
