@@ -17,7 +17,6 @@
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Two_vertices_parameterizer_3.h>
-#include <CGAL/Surface_mesh_parameterization/orbifold_enums.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
@@ -238,13 +237,17 @@ public:
     : m_initial(make_initial(border)), m_options(options), m_solver_traits(solver_traits)
   {}
 
-  /// Refused at compile time: orbifold cones are not placed by this
-  /// parameterizer (CGAL's `Orbifold_Tutte_parameterizer_3(orbifold, weights)`).
-  /// \tparam T not to be given
-  template <class T = void>
-  Discrete_lie_flow_parameterizer_3(Orbifold_type, Weight_type = Cotangent)
+  /// Refused at compile time: CGAL's `Orbifold_Tutte_parameterizer_3(orbifold,
+  /// weights)`, whose arguments are enumerations (`Orbifold_type`,
+  /// `Weight_type`; `orbifold_enums.h` is not included here: in CGAL 5.5 it
+  /// defines a function that is not `inline`). Orbifold cones are not placed
+  /// by this parameterizer.
+  /// \tparam Enum an enumeration
+  /// \tparam Rest any further arguments
+  template <class Enum, class... Rest, typename std::enable_if<std::is_enum<Enum>::value, int>::type = 0>
+  Discrete_lie_flow_parameterizer_3(Enum, Rest...)
   {
-    static_assert(internal::dlf::Always_false<T>::value,
+    static_assert(internal::dlf::Always_false<Enum>::value,
                   "Discrete_lie_flow_parameterizer_3 places no orbifold cones: keep Orbifold_Tutte_parameterizer_3, "
                   "or cut the mesh to a disk (Seam_mesh) and flatten it without cones");
   }
