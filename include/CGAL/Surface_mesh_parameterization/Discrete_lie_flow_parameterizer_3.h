@@ -18,6 +18,22 @@
 #include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Two_vertices_parameterizer_3.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+
+// What a program written for Orbifold_Tutte_parameterizer_3 uses besides the
+// class (cones read and located, their types, the shortest paths between
+// them: in its header), so that with the class name swapped it compiles up
+// to the constructor's one-line refusal.
+// CGAL 5.5's orbifold_enums.h defines get_orbifold_type() without `inline`;
+// declared inline first, the header may be included by every translation unit.
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_ORBIFOLD_ENUMS_H
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+inline const char* get_orbifold_type(int orb_type);
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+#endif
+#include <CGAL/Surface_mesh_parameterization/orbifold_enums.h>
+#include <CGAL/Surface_mesh_parameterization/Orbifold_Tutte_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Containers_filler.h>
@@ -107,6 +123,18 @@ struct Initial_parameterizer_of<TriangleMesh, Second, true>
 template <class TriangleMesh, class Mesh>
 struct Initial_parameterizer_of<TriangleMesh, Two_vertices_parameterizer_3<Mesh>, true>
 { typedef LSCM_parameterizer_3<TriangleMesh, Two_vertices_parameterizer_3<Mesh> > type; };
+
+/// The key and value types of a property map, `void` for what is not one
+/// (so that a wrongly bound argument gives one readable `static_assert`).
+template <class Map, class = void>
+struct Map_types { typedef void key_type; typedef void value_type; };
+template <class Map>
+struct Map_types<Map, std::void_t<typename boost::property_traits<Map>::key_type,
+                                  typename boost::property_traits<Map>::value_type> >
+{
+  typedef typename boost::property_traits<Map>::key_type key_type;     ///< the key
+  typedef typename boost::property_traits<Map>::value_type value_type; ///< the value
+};
 
 /// False for every `T`: a `static_assert` that fires only when its template is used.
 template <class T>
@@ -238,16 +266,12 @@ public:
   {}
 
   /// Refused at compile time: CGAL's `Orbifold_Tutte_parameterizer_3(orbifold,
-  /// weights)`, whose arguments are enumerations (`Orbifold_type`,
-  /// `Weight_type`; `orbifold_enums.h` is not included here: in CGAL 5.5 it
-  /// defines a function that is not `inline`). Orbifold cones are not placed
-  /// by this parameterizer.
-  /// \tparam Enum an enumeration
-  /// \tparam Rest any further arguments
-  template <class Enum, class... Rest, typename std::enable_if<std::is_enum<Enum>::value, int>::type = 0>
-  Discrete_lie_flow_parameterizer_3(Enum, Rest...)
+  /// weights)`; orbifold cones are not placed by this parameterizer.
+  /// \tparam T not to be given
+  template <class T = void>
+  Discrete_lie_flow_parameterizer_3(Orbifold_type, Weight_type = Cotangent)
   {
-    static_assert(internal::dlf::Always_false<Enum>::value,
+    static_assert(internal::dlf::Always_false<T>::value,
                   "Discrete_lie_flow_parameterizer_3 places no orbifold cones: keep Orbifold_Tutte_parameterizer_3, "
                   "or cut the mesh to a disk (Seam_mesh) and flatten it without cones");
   }
@@ -329,9 +353,9 @@ public:
                           VertexIndexMap vimap, VertexParameterizedMap vpmap)
   {
     // Wrongly bound maps stop here, with a message, not deep in the flow.
-    typedef boost::property_traits<VertexUVmap> UV_traits;
-    typedef boost::property_traits<VertexIndexMap> Index_traits;
-    typedef boost::property_traits<VertexParameterizedMap> Parameterized_traits;
+    typedef internal::dlf::Map_types<VertexUVmap> UV_traits;
+    typedef internal::dlf::Map_types<VertexIndexMap> Index_traits;
+    typedef internal::dlf::Map_types<VertexParameterizedMap> Parameterized_traits;
     constexpr bool uv_ok = std::is_convertible<vertex_descriptor, typename UV_traits::key_type>::value &&
                            std::is_convertible<typename UV_traits::value_type, Point_2>::value &&
                            std::is_convertible<Point_2, typename UV_traits::value_type>::value;
