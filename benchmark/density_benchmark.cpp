@@ -109,7 +109,8 @@ static Run run(SM& mesh, SM::Halfedge_index bhd, const std::vector<face_descript
     if(density) dlf.set_face_density(*density);
     const double c0 = cpu_now();
     const Clock::time_point t0 = Clock::now();
-    r.status = int(SMP::parameterize(mesh, dlf, bhd, uv));
+    SMP::parameterize(mesh, dlf, bhd, uv);
+    r.status = int(dlf.report().status); // the precise code (the call returns CGAL's nearest)
     walls.push_back(seconds_since(t0));
     cpus.push_back(cpu_now() - c0);
     r.iterations = dlf.report().iterations;

@@ -289,7 +289,8 @@ static Run run_once(int method, const Mesh_case& c, const SMP::Discrete_lie_flow
     break;
   }
   }
-  r.status = int(err);
+  // DLF's precise code is its report's (its call returns CGAL's nearest).
+  r.status = r.has_report ? int(r.report.status) : int(err);
   r.uv.resize(c.vertex_of.size());
   for(std::size_t i = 0; i < c.vertex_of.size(); ++i) {
     const K::Point_2& p = get(uvmap, c.vertex_of[i]);

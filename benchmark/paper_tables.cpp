@@ -229,7 +229,7 @@ static Dlf_run run_dlf(const SM& input, halfedge_descriptor bhd, SMP::Discrete_l
   r.seconds = seconds_since(t0);
   r.ok = err == SMP::OK;
   r.status = r.ok ? (p.report().converged() ? "converged" : SMP::discrete_lie_flow_stop_reason_name(p.report().stop_reason))
-                  : SMP::discrete_lie_flow_error_name(err);
+                  : SMP::discrete_lie_flow_error_name(p.report().status);
   r.iterations = p.report().iterations;
   if(r.ok) r.uv = uv_of(m, uvmap);
   return r;

@@ -59,8 +59,10 @@ int main(int argc, char** argv)
 
   const SMP::Error_code err = SMP::parameterize(sm, parameterizer, bhd, uvmap);
   if(err != SMP::OK) {
-    // The report's message names the offending element (face, vertex).
-    std::cerr << "Error: " << SMP::discrete_lie_flow_error_message(err) << ": " << parameterizer.report().message
+    // CGAL's code is returned; the report holds the precise one, and its
+    // message names the offending element (face, vertex).
+    std::cerr << "Error: " << SMP::discrete_lie_flow_error_message(parameterizer.report().status) << ": "
+              << parameterizer.report().message
               << std::endl;
     return EXIT_FAILURE;
   }

@@ -127,7 +127,10 @@ Flow_run flow(Loaded& m, double tolerance, Setup setup)
   Dlf dlf(Dlf::Initial_parameterizer(), options);
   setup(dlf);
   Flow_run r;
-  r.code = SMP::parameterize(m.sm, dlf, m.bhd, uv);
+  // The precise code (the report's); the entry point returns CGAL's nearest.
+  const SMP::Error_code cgal = SMP::parameterize(m.sm, dlf, m.bhd, uv);
+  r.code = dlf.report().status;
+  EXPECT_EQ(cgal, SMP::discrete_lie_flow_cgal_error_code(r.code));
   r.iterations = dlf.report().iterations;
   r.d_area = dlf.report().final_d_area;
   r.stop = SMP::discrete_lie_flow_stop_reason_name(dlf.report().stop_reason);

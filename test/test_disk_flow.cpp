@@ -295,7 +295,10 @@ Flow_run run_dlf(SM& sm, typename Dlf::Initial_parameterizer init, const SMP::Di
   auto vpm = sm.add_property_map<SM_vertex, bool>("v:test_param", false).first;
   for(SM_vertex v : vertices(sm)) vim[v] = int(v.idx());
   Dlf dlf(init, opt);
-  r.code = dlf.parameterize(sm, bhd, uvm, vim, vpm);
+  // The precise code (the report's); the entry point returns CGAL's nearest.
+  const SMP::Error_code cgal = dlf.parameterize(sm, bhd, uvm, vim, vpm);
+  r.code = dlf.report().status;
+  EXPECT_EQ(cgal, SMP::discrete_lie_flow_cgal_error_code(r.code));
   r.report = dlf.report();
   for(SM_vertex v : vertices(sm)) r.uv.push_back({{ uvm[v].x(), uvm[v].y() }});
   sm.remove_property_map(uvm);

@@ -518,7 +518,8 @@ TEST(Features, DegeneracyRatioHoldsEveryFlowingFace)
   // Above every face: nothing is acceptable, the flow reports it stalled.
   o.paper.degeneracy_ratio = 2;
   Dlf refused(Dlf::Initial_parameterizer(), o);
-  EXPECT_EQ(SMP::parameterize(m.sm, refused, m.bhd, uv), SMP::ERROR_FLOW_STALLED);
+  EXPECT_EQ(SMP::parameterize(m.sm, refused, m.bhd, uv), SMP::ERROR_NO_1_TO_1_MAPPING);
+  EXPECT_EQ(refused.report().status, SMP::ERROR_FLOW_STALLED);
   EXPECT_EQ(refused.report().iterations, 0u);
 }
 
@@ -668,7 +669,8 @@ TEST(Features, InitialMapErrorsArePassedOn)
   Failing_initial nan;
   nan.write_nan = true;
   Failing_dlf dlf(nan);
-  EXPECT_EQ(SMP::parameterize(m.sm, dlf, m.bhd, uv), SMP::ERROR_INITIAL_MAP_FOLDED);
+  EXPECT_EQ(SMP::parameterize(m.sm, dlf, m.bhd, uv), SMP::ERROR_NO_1_TO_1_MAPPING);
+  EXPECT_EQ(dlf.report().status, SMP::ERROR_INITIAL_MAP_FOLDED);
   EXPECT_NE(dlf.report().message.find("non-finite uv"), std::string::npos) << dlf.report().message;
 }
 
@@ -943,5 +945,6 @@ TEST(Features, GivenUvStartOnANonConvexDomain)
   SM_vertex a = at[{ 3, 3 }], b = at[{ 4, 3 }];
   std::swap(flat[a], flat[b]);
   Given_dlf folded(Given(flat), o);
-  EXPECT_EQ(SMP::parameterize(sm, folded, bhd, uv), SMP::ERROR_INITIAL_MAP_FOLDED);
+  EXPECT_EQ(SMP::parameterize(sm, folded, bhd, uv), SMP::ERROR_NO_1_TO_1_MAPPING);
+  EXPECT_EQ(folded.report().status, SMP::ERROR_INITIAL_MAP_FOLDED);
 }

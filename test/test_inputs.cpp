@@ -229,8 +229,15 @@ struct SM_call
     vpm = sm.add_property_map<SM_vertex, bool>("v:t_param", false).first;
     for(SM_vertex v : vertices(sm)) vim[v] = int(v.idx());
   }
+  // The precise code, the report's; the entry point returns CGAL's nearest one.
   template <class P>
-  SMP::Error_code run(P& p, SM_halfedge bhd) { return p.parameterize(sm, bhd, uv, vim, vpm); }
+  SMP::Error_code run(P& p, SM_halfedge bhd)
+  {
+    const SMP::Error_code cgal = p.parameterize(sm, bhd, uv, vim, vpm);
+    EXPECT_EQ(cgal, SMP::discrete_lie_flow_cgal_error_code(p.report().status)) << p.report().message;
+    EXPECT_LE(int(cgal), int(SMP::ERROR_NO_1_TO_1_MAPPING)) << "a code CGAL's get_error_message explains";
+    return p.report().status;
+  }
 };
 
 // ---------------------------------------------------------------------------

@@ -53,7 +53,9 @@ Disk_run run_disk_on(Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_de
   Disk_run run;
   Parameterizer parameterizer(init, settings.options);
   const auto t0 = std::chrono::steady_clock::now();
-  run.status = parameterizer.parameterize(mesh, bhd, uvmap, vimap, vpmap);
+  // The precise code is the report's (the call returns CGAL's nearest).
+  parameterizer.parameterize(mesh, bhd, uvmap, vimap, vpmap);
+  run.status = parameterizer.report().status;
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   run.report = parameterizer.report();
   run.initial_uv = std::move(run.report.initial_uv); // the flow overwrote the map; the report kept the start

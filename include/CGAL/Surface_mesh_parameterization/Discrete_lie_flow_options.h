@@ -55,6 +55,45 @@ inline const char* discrete_lie_flow_error_message(int code)
 }
 
 /// \ingroup PkgDiscreteLieFlowErrors
+/// The code of CGAL's `Error_code` enum nearest in meaning to `code` (a code
+/// of either enum): what the `Parameterizer_3` entry points of this package
+/// return, so that CGAL's `get_error_message()` explains it and CGAL's
+/// programs and tests read it as they read CGAL's own parameterizers'. The
+/// precise code stays in the report (`Discrete_lie_flow_report::status`).
+///
+/// - a folded initial map, a flow that could not keep any step one-to-one:
+///   `ERROR_NO_1_TO_1_MAPPING`;
+/// - a zero-area face or a non-finite coordinate (the flow's cotangent
+///   system is then undefined, as CGAL's own are): `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM`;
+/// - not a disk, not genus 0: `ERROR_NO_TOPOLOGICAL_DISC`, CGAL's "input not supported";
+/// - an invalid density or a vertex index map that does not number the
+///   vertices (`ERROR_WRONG_PARAMETER`, which CGAL 5.5's `get_error_message()`
+///   has no text for: it returns a null pointer): `ERROR_NO_1_TO_1_MAPPING`,
+///   no map was made;
+/// - CGAL's other codes: themselves; any other value: `ERROR_NO_1_TO_1_MAPPING`.
+inline Error_code discrete_lie_flow_cgal_error_code(int code)
+{
+  switch(code) {
+  case OK: return OK;
+  case ERROR_EMPTY_MESH: return ERROR_EMPTY_MESH;
+  case ERROR_NON_TRIANGULAR_MESH: return ERROR_NON_TRIANGULAR_MESH;
+  case ERROR_NO_TOPOLOGICAL_DISC: return ERROR_NO_TOPOLOGICAL_DISC;
+  case ERROR_NO_TOPOLOGICAL_BALL: return ERROR_NO_TOPOLOGICAL_BALL;
+  case ERROR_BORDER_TOO_SHORT: return ERROR_BORDER_TOO_SHORT;
+  case ERROR_NON_CONVEX_BORDER: return ERROR_NON_CONVEX_BORDER;
+  case ERROR_CANNOT_SOLVE_LINEAR_SYSTEM: return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  case ERROR_NO_1_TO_1_MAPPING: return ERROR_NO_1_TO_1_MAPPING;
+  case ERROR_WRONG_PARAMETER: return ERROR_NO_1_TO_1_MAPPING;
+  case ERROR_INITIAL_MAP_FOLDED: return ERROR_NO_1_TO_1_MAPPING;
+  case ERROR_DEGENERATE_INPUT: return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  case ERROR_INVALID_DENSITY: return ERROR_NO_1_TO_1_MAPPING;
+  case ERROR_FLOW_STALLED: return ERROR_NO_1_TO_1_MAPPING;
+  case ERROR_NOT_GENUS_0: return ERROR_NO_TOPOLOGICAL_DISC;
+  }
+  return ERROR_NO_1_TO_1_MAPPING;
+}
+
+/// \ingroup PkgDiscreteLieFlowErrors
 /// The identifier of an `Error_code` value as used in reports (`"ok"`, `"ERROR_NO_TOPOLOGICAL_DISC"`, ...).
 inline const char* discrete_lie_flow_error_name(int code)
 {

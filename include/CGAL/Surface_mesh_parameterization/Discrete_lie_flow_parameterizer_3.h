@@ -14,6 +14,25 @@
 
 #include <CGAL/Surface_mesh_parameterization/Symmetric_barycentric_mapping_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Two_vertices_parameterizer_3.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+
+// What a program written for Orbifold_Tutte_parameterizer_3 uses besides the
+// class (cones read and located, their types, the shortest paths between
+// them: in its header), so that with the class name swapped it compiles up
+// to the constructor's one-line refusal.
+// CGAL 5.5's orbifold_enums.h defines get_orbifold_type() without `inline`;
+// declared inline first, the header may be included by every translation unit.
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_ORBIFOLD_ENUMS_H
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+inline const char* get_orbifold_type(int orb_type);
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+#endif
+#include <CGAL/Surface_mesh_parameterization/orbifold_enums.h>
+#include <CGAL/Surface_mesh_parameterization/Orbifold_Tutte_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Containers_filler.h>
@@ -55,6 +74,71 @@ struct Is_tutte_on_arc_length_circle<
   Symmetric_barycentric_mapping_parameterizer_3<TriangleMesh, Circular_border_arc_length_parameterizer_3<TriangleMesh>, Solver>,
   TriangleMesh> : std::true_type {};
 
+/// Whether `T` is one of the package's Tutte starts on a convex border,
+/// with which the library's own Tutte start of a disk with holes is the
+/// same kind of map as the caller asked for.
+template <class T>
+struct Is_symmetric_barycentric : std::false_type {};
+template <class TriangleMesh, class Border, class Solver>
+struct Is_symmetric_barycentric<Symmetric_barycentric_mapping_parameterizer_3<TriangleMesh, Border, Solver> >
+  : std::true_type {};
+
+/// Whether `T` is a CGAL border parameterizer (it places only the border;
+/// CGAL's `Fixed_border_parameterizer_3` and `LSCM_parameterizer_3` take it
+/// as their second template argument): they, and only they, say whether
+/// the border they make is convex.
+template <class T, class = void>
+struct Is_border_parameterizer : std::false_type {};
+template <class T>
+struct Is_border_parameterizer<T, decltype(void(std::declval<const T&>().is_border_convex()))> : std::true_type {};
+
+/// Whether `T` models `Parameterizer_3` for `TriangleMesh`: its
+/// `parameterize(mesh, bhd, uvmap, vimap, vpmap)` accepts the maps CGAL's
+/// `parameterize()` passes.
+template <class T, class TriangleMesh, class = void>
+struct Is_parameterizer_3 : std::false_type {};
+template <class T, class TriangleMesh>
+struct Is_parameterizer_3<T, TriangleMesh, decltype(void(std::declval<T&>().parameterize(
+  std::declval<TriangleMesh&>(), std::declval<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>(),
+  std::declval<typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<
+    typename CGAL::Surface_mesh_parameterization::internal::Kernel_traits<TriangleMesh>::Kernel::Point_2> >::type>(),
+  std::declval<typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<int> >::type>(),
+  std::declval<typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<bool> >::type>())))>
+  : std::true_type {};
+
+/// The initial parameterizer of `Discrete_lie_flow_parameterizer_3<TriangleMesh, Second>`:
+/// the default Tutte start; Tutte's map inside the border of a CGAL border
+/// parameterizer (the meaning CGAL's fixed-border parameterizers give their
+/// second argument); LSCM with `Two_vertices_parameterizer_3` (the free
+/// border CGAL's `LSCM_parameterizer_3` gives it); or `Second` itself.
+template <class TriangleMesh, class Second, bool border = Is_border_parameterizer<Second>::value>
+struct Initial_parameterizer_of { typedef Second type; };
+template <class TriangleMesh, bool border>
+struct Initial_parameterizer_of<TriangleMesh, Default, border>
+{ typedef Symmetric_barycentric_mapping_parameterizer_3<TriangleMesh> type; };
+template <class TriangleMesh, class Second>
+struct Initial_parameterizer_of<TriangleMesh, Second, true>
+{ typedef Symmetric_barycentric_mapping_parameterizer_3<TriangleMesh, Second> type; };
+template <class TriangleMesh, class Mesh>
+struct Initial_parameterizer_of<TriangleMesh, Two_vertices_parameterizer_3<Mesh>, true>
+{ typedef LSCM_parameterizer_3<TriangleMesh, Two_vertices_parameterizer_3<Mesh> > type; };
+
+/// The key and value types of a property map, `void` for what is not one
+/// (so that a wrongly bound argument gives one readable `static_assert`).
+template <class Map, class = void>
+struct Map_types { typedef void key_type; typedef void value_type; };
+template <class Map>
+struct Map_types<Map, std::void_t<typename boost::property_traits<Map>::key_type,
+                                  typename boost::property_traits<Map>::value_type> >
+{
+  typedef typename boost::property_traits<Map>::key_type key_type;     ///< the key
+  typedef typename boost::property_traits<Map>::value_type value_type; ///< the value
+};
+
+/// False for every `T`: a `static_assert` that fires only when its template is used.
+template <class T>
+struct Always_false : std::false_type {};
+
 } // namespace dlf
 } // namespace internal
 
@@ -83,18 +167,36 @@ struct Is_tutte_on_arc_length_circle<
 /// (circle, square or free, as the initial parameterizer places it); every
 /// other loop floats. The flow runs on the disk made by filling each hole
 /// with a fan of virtual triangles around a virtual vertex (their targets:
-/// the fan's 3D area), starting from Tutte's embedding of that filled disk
-/// inside the initial parameterizer's outer loop (the library's own start:
-/// the initial parameterizer cannot see the fill). The fill stays positively
-/// oriented like the caller's triangles, so the result is globally
-/// injective: no hole overlaps the rest of the map. The map, the report and
-/// the area elements are about the caller's vertices and faces only.
+/// the fan's 3D area). The start keeps the initial parameterizer's map when
+/// it is fold-free and each hole's virtual vertex can be placed inside the
+/// hole's uv polygon (checked by the exact predicate); the package's Tutte
+/// starts (`Symmetric_barycentric_mapping_parameterizer_3`), and any map
+/// that cannot be kept, start from Tutte's embedding of the filled disk
+/// inside the initial map's outer loop, or, when that folds (a non-convex
+/// loop), on the circle by arc length; the report's message names the
+/// start taken. The fill stays positively oriented like the caller's
+/// triangles, so the result is globally injective: no hole overlaps the
+/// rest of the map. The map, the report and the area elements are about
+/// the caller's vertices and faces only.
+///
+/// A drop-in for CGAL's parameterizers: the second template argument may be
+/// a CGAL border parameterizer, as CGAL's parameterizers take it (the start
+/// is then Tutte's map inside that border, or LSCM with
+/// `Two_vertices_parameterizer_3`), the constructor takes that border
+/// parameterizer, the calls of `Iterative_authalic_parameterizer_3` are
+/// offered, and every entry point returns a code of CGAL's `Error_code`
+/// (`discrete_lie_flow_cgal_error_code()`) with the precise one in `report()`.
 ///
 /// \cgalModels `Parameterizer_3`
 ///
 /// \tparam TriangleMesh_ a model of `FaceGraph`
 /// \tparam InitialParameterizer_ a model of `Parameterizer_3` giving a flip-free
 ///   initial map; its border decides the domain (circle, square, or free).
+///   Or a CGAL border parameterizer (a class with `is_border_convex()`, such
+///   as `Circular_border_arc_length_parameterizer_3` or
+///   `Square_border_uniform_parameterizer_3`): the initial map is then
+///   `Symmetric_barycentric_mapping_parameterizer_3` with that border, or
+///   `LSCM_parameterizer_3` with `Two_vertices_parameterizer_3` (a free border).
 ///   Default: Tutte on the circle by arc length (`Symmetric_barycentric_mapping_parameterizer_3`).
 ///   With that parameterizer (on the circle by arc length, any solver), a
 ///   disk and the certified mode, the flow computes the same map itself,
@@ -112,9 +214,9 @@ public:
 
   /// The mesh type, `TriangleMesh_`.
   typedef TriangleMesh_ Triangle_mesh;
-  /// The parameterizer of the initial map.
-  typedef typename Default::Get<InitialParameterizer_,
-    Symmetric_barycentric_mapping_parameterizer_3<TriangleMesh_> >::type Initial_parameterizer;
+  /// The parameterizer of the initial map (see `InitialParameterizer_`).
+  typedef typename internal::dlf::Initial_parameterizer_of<TriangleMesh_, InitialParameterizer_>::type
+    Initial_parameterizer;
   /// The solver traits of the flow's sparse SPD systems.
   typedef typename Default::Get<SolverTraits_,
     Eigen_solver_traits<internal::dlf::Default_spd_solver> >::type Solver_traits;
@@ -132,6 +234,12 @@ public:
 
   /// @}
 
+  static_assert(internal::dlf::Is_border_parameterizer<Initial_parameterizer>::value ||
+                internal::dlf::Is_parameterizer_3<Initial_parameterizer, Triangle_mesh>::value,
+                "Discrete_lie_flow_parameterizer_3<Mesh, X>: X must be a CGAL border parameterizer "
+                "(e.g. Circular_border_arc_length_parameterizer_3<Mesh>) or a Parameterizer_3 of Mesh giving "
+                "the initial map (e.g. LSCM_parameterizer_3<Mesh>)");
+
   /// \param initial the parameterizer that gives the initial map
   /// \param options flow settings (mode, tolerance, caps, density, callback)
   /// \param solver_traits the sparse SPD solver
@@ -140,6 +248,32 @@ public:
                                              Solver_traits solver_traits = Solver_traits())
     : m_initial(initial), m_options(options), m_solver_traits(solver_traits)
   {}
+
+  /// CGAL's idiom `Parameterizer parameterizer(border_parameterizer)`: the
+  /// initial parameterizer is built from the border parameterizer `border`.
+  /// \tparam BorderParameterizer a CGAL border parameterizer (it has `is_border_convex()`)
+  /// \param border the parameterizer of the border
+  /// \param options flow settings
+  /// \param solver_traits the sparse SPD solver
+  template <class BorderParameterizer,
+            typename std::enable_if<internal::dlf::Is_border_parameterizer<BorderParameterizer>::value &&
+                                    !std::is_same<BorderParameterizer, Initial_parameterizer>::value, int>::type = 0>
+  Discrete_lie_flow_parameterizer_3(const BorderParameterizer& border,
+                                    Discrete_lie_flow_options options = Discrete_lie_flow_options(),
+                                    Solver_traits solver_traits = Solver_traits())
+    : m_initial(make_initial(border)), m_options(options), m_solver_traits(solver_traits)
+  {}
+
+  /// Refused at compile time: CGAL's `Orbifold_Tutte_parameterizer_3(orbifold,
+  /// weights)`; orbifold cones are not placed by this parameterizer.
+  /// \tparam T not to be given
+  template <class T = void>
+  Discrete_lie_flow_parameterizer_3(Orbifold_type, Weight_type = Cotangent)
+  {
+    static_assert(internal::dlf::Always_false<T>::value,
+                  "Discrete_lie_flow_parameterizer_3 places no orbifold cones: keep Orbifold_Tutte_parameterizer_3, "
+                  "or cut the mesh to a disk (Seam_mesh) and flatten it without cones");
+  }
 
   /// The flow settings, to read or change before `parameterize()`.
   Discrete_lie_flow_options& options() { return m_options; }
@@ -197,12 +331,174 @@ public:
   /// whose triangles all have the orientation of the initial map's (never NaN); on error, `uvmap` keeps whatever the
   /// initial parameterizer wrote, and the report's message names the element.
   ///
+  /// Returns a code of CGAL's `Error_code` enum, the nearest in meaning
+  /// (`discrete_lie_flow_cgal_error_code()`); `report().status` holds the
+  /// precise one, a code of `Discrete_lie_flow_error_code` where it has one.
+  ///
   /// \pre `bhd` is a border halfedge of `mesh`, whose connected component is
   /// a disk or, in certified mode, a disk with holes (genus 0); `vimap`
   /// indexes the vertices of that component from 0.
+  ///
+  /// \tparam VertexUVmap a `ReadWritePropertyMap`, `vertex_descriptor` → `Point_2`
+  /// \tparam VertexIndexMap a `ReadablePropertyMap`, `vertex_descriptor` → integer
+  /// \tparam VertexParameterizedMap a `ReadWritePropertyMap`, `vertex_descriptor` → `bool`
+  /// \param mesh the mesh
+  /// \param bhd a border halfedge of the component to map
+  /// \param uvmap receives the map
+  /// \param vimap numbers the component's vertices from 0
+  /// \param vpmap marks the vertices the initial parameterizer placed
   template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>
   Error_code parameterize(Triangle_mesh& mesh, halfedge_descriptor bhd, VertexUVmap uvmap,
                           VertexIndexMap vimap, VertexParameterizedMap vpmap)
+  {
+    // Wrongly bound maps stop here, with a message, not deep in the flow.
+    typedef internal::dlf::Map_types<VertexUVmap> UV_traits;
+    typedef internal::dlf::Map_types<VertexIndexMap> Index_traits;
+    typedef internal::dlf::Map_types<VertexParameterizedMap> Parameterized_traits;
+    constexpr bool uv_ok = std::is_convertible<vertex_descriptor, typename UV_traits::key_type>::value &&
+                           std::is_convertible<typename UV_traits::value_type, Point_2>::value &&
+                           std::is_convertible<Point_2, typename UV_traits::value_type>::value;
+    constexpr bool index_ok = std::is_convertible<vertex_descriptor, typename Index_traits::key_type>::value &&
+                              std::is_integral<typename Index_traits::value_type>::value;
+    constexpr bool parameterized_ok = std::is_convertible<vertex_descriptor, typename Parameterized_traits::key_type>::value &&
+                                      std::is_convertible<typename Parameterized_traits::value_type, bool>::value &&
+                                      std::is_convertible<bool, typename Parameterized_traits::value_type>::value;
+    static_assert(uv_ok, "parameterize(mesh, bhd, uvmap, vimap, vpmap): uvmap must map vertex_descriptor to Point_2 "
+                         "(a cone map belongs to Orbifold_Tutte_parameterizer_3, which this parameterizer does not replace)");
+    static_assert(!uv_ok || index_ok, "parameterize(mesh, bhd, uvmap, vimap, vpmap): vimap must map vertex_descriptor to an integer index");
+    static_assert(!uv_ok || !index_ok || parameterized_ok,
+                  "parameterize(mesh, bhd, uvmap, vimap, vpmap): vpmap must map vertex_descriptor to bool");
+    if constexpr(uv_ok && index_ok && parameterized_ok)
+      return discrete_lie_flow_cgal_error_code(run(mesh, bhd, uvmap, vimap, vpmap));
+    else
+      return ERROR_NO_1_TO_1_MAPPING;
+  }
+
+  /// \name Calls of CGAL's Iterative_authalic_parameterizer_3
+  /// The calls of CGAL's `Iterative_authalic_parameterizer_3`, so that its
+  /// programs run with the class name swapped: `iterations` caps the flow's
+  /// iterations for this call (`Discrete_lie_flow_options::max_iterations`);
+  /// on return, the in/out arguments receive the iterations the flow took and
+  /// its area error, CGAL's measure `Σ_t |S_t − Ŝ_t|` of the final map
+  /// (`Discrete_lie_flow_distortion::area_total`). The report says more.
+  /// @{
+
+  /// \param mesh the mesh
+  /// \param bhd a border halfedge of the component to map
+  /// \param uvmap receives the map
+  /// \param vimap numbers the component's vertices from 0
+  /// \param vpmap marks the vertices the initial parameterizer placed
+  /// \param iterations in: the cap on the flow's iterations; out: the iterations taken
+  /// \param error out: the final map's area error
+  template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>
+  Error_code parameterize(Triangle_mesh& mesh, halfedge_descriptor bhd, VertexUVmap uvmap, VertexIndexMap vimap,
+                          VertexParameterizedMap vpmap, unsigned int& iterations, double& error)
+  {
+    const std::size_t cap = m_options.max_iterations;
+    m_options.max_iterations = iterations;
+    const Error_code code = parameterize(mesh, bhd, uvmap, vimap, vpmap);
+    m_options.max_iterations = cap;
+    iterations = static_cast<unsigned int>(m_report.iterations);
+    error = m_report.final_metrics.area_total;
+    return code;
+  }
+
+  /// \param mesh the mesh
+  /// \param bhd a border halfedge of the component to map
+  /// \param uvmap receives the map
+  /// \param vimap numbers the component's vertices from 0
+  /// \param vpmap marks the vertices the initial parameterizer placed
+  /// \param iterations in: the cap on the flow's iterations; out: the iterations taken
+  template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>
+  Error_code parameterize(Triangle_mesh& mesh, halfedge_descriptor bhd, VertexUVmap uvmap, VertexIndexMap vimap,
+                          VertexParameterizedMap vpmap, unsigned int& iterations)
+  {
+    double error = 0;
+    return parameterize(mesh, bhd, uvmap, vimap, vpmap, iterations, error);
+  }
+
+  /// \param mesh the mesh
+  /// \param bhd a border halfedge of the component to map
+  /// \param uvmap receives the map
+  /// \param vimap numbers the component's vertices from 0
+  /// \param vpmap marks the vertices the initial parameterizer placed
+  /// \param iterations the cap on the flow's iterations
+  template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>
+  Error_code parameterize(Triangle_mesh& mesh, halfedge_descriptor bhd, VertexUVmap uvmap, VertexIndexMap vimap,
+                          VertexParameterizedMap vpmap, const unsigned int& iterations)
+  {
+    unsigned int taken = iterations;
+    return parameterize(mesh, bhd, uvmap, vimap, vpmap, taken);
+  }
+
+  /// Numbers the vertices of `bhd`'s component itself.
+  /// \param mesh the mesh
+  /// \param bhd a border halfedge of the component to map
+  /// \param uvmap receives the map
+  /// \param iterations the cap on the flow's iterations
+  template <typename VertexUVmap>
+  Error_code parameterize(Triangle_mesh& mesh, halfedge_descriptor bhd, VertexUVmap uvmap, const unsigned int iterations)
+  {
+    const std::size_t cap = m_options.max_iterations;
+    m_options.max_iterations = iterations;
+    const Error_code code = parameterize(mesh, bhd, uvmap);
+    m_options.max_iterations = cap;
+    return code;
+  }
+
+  /// Numbers the vertices of `bhd`'s component itself; the flow's own cap on iterations.
+  /// \param mesh the mesh
+  /// \param bhd a border halfedge of the component to map
+  /// \param uvmap receives the map
+  template <typename VertexUVmap>
+  Error_code parameterize(Triangle_mesh& mesh, halfedge_descriptor bhd, VertexUVmap uvmap)
+  {
+    typedef CGAL::dynamic_vertex_property_t<int> Vertex_int_tag;
+    typename boost::property_map<Triangle_mesh, Vertex_int_tag>::type vimap = get(Vertex_int_tag(), mesh);
+    // A halfedge that is not on a border is reported by the parameterizer.
+    if(bhd != boost::graph_traits<Triangle_mesh>::null_halfedge() && is_border(bhd, mesh))
+      internal::fill_index_map_of_cc(bhd, mesh, vimap);
+    typedef CGAL::dynamic_vertex_property_t<bool> Vertex_bool_tag;
+    typename boost::property_map<Triangle_mesh, Vertex_bool_tag>::type vpmap = get(Vertex_bool_tag(), mesh);
+    return parameterize(mesh, bhd, uvmap, vimap, vpmap);
+  }
+
+  /// The component of the mesh's longest border.
+  /// \param mesh the mesh
+  /// \param uvmap receives the map
+  /// \param iterations the cap on the flow's iterations
+  template <typename VertexUVmap>
+  Error_code parameterize(Triangle_mesh& mesh, VertexUVmap uvmap, const unsigned int iterations)
+  {
+    return parameterize(mesh, Polygon_mesh_processing::longest_border(mesh).first, uvmap, iterations);
+  }
+
+  /// The component of the mesh's longest border; the flow's own cap on iterations.
+  /// \param mesh the mesh
+  /// \param uvmap receives the map
+  template <typename VertexUVmap>
+  Error_code parameterize(Triangle_mesh& mesh, VertexUVmap uvmap)
+  {
+    return parameterize(mesh, Polygon_mesh_processing::longest_border(mesh).first, uvmap);
+  }
+
+  /// @}
+
+private:
+  template <class BorderParameterizer>
+  static Initial_parameterizer make_initial(const BorderParameterizer& border)
+  {
+    constexpr bool buildable = std::is_constructible<Initial_parameterizer, const BorderParameterizer&>::value;
+    static_assert(buildable, "Discrete_lie_flow_parameterizer_3(border): the initial parameterizer is not built from "
+                             "this border parameterizer; give it as the second template argument instead");
+    if constexpr(buildable) return Initial_parameterizer(border);
+    else return Initial_parameterizer();
+  }
+
+  // The run, with the package's own codes (the report's status).
+  template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>
+  Error_code run(Triangle_mesh& mesh, halfedge_descriptor bhd, VertexUVmap uvmap,
+                 VertexIndexMap vimap, VertexParameterizedMap vpmap)
   {
     typedef std::chrono::steady_clock Clock;
     namespace D = internal::dlf;
@@ -245,38 +541,37 @@ public:
       if(code != OK) return fail(code, std::string("initial map: ") + discrete_lie_flow_error_message(code));
     }
 
-    // With holes, only the outer loop is taken from the initial map.
+    // With holes, the initial map is kept only when the filled disk's start
+    // built from it certifies (below); its outer loop is needed in any case.
     std::vector<char> taken(vertex_of.size(), P.fill_faces == 0);
     for(int b : P.boundary) taken[std::size_t(b)] = 1;
+    bool all_finite = true;
     for(std::size_t i = 0; i < vertex_of.size(); ++i) {
       const Point_2 p = get(uvmap, vertex_of[i]);
       uv[i] = {{ CGAL::to_double(p.x()), CGAL::to_double(p.y()) }};
-      if(taken[i] && (!std::isfinite(uv[i][0]) || !std::isfinite(uv[i][1])))
+      const bool finite = std::isfinite(uv[i][0]) && std::isfinite(uv[i][1]);
+      all_finite = all_finite && finite;
+      if(taken[i] && !finite)
         return fail(ERROR_INITIAL_MAP_FOLDED, "initial map: vertex " + std::to_string(i) + " has a non-finite uv");
     }
+    std::string start;
     if(P.fill_faces > 0) {
-      // The initial parameterizer does not see the fill: it gives the outer
-      // loop (the domain's border), and the start is Tutte's embedding of
-      // the filled disk inside it, bijective in exact arithmetic when the
-      // loop is convex; flow_disk() certifies it by the exact predicate.
+      // The initial parameterizer does not see the fill.
       const Clock::time_point t1 = Clock::now();
       uv.resize(P.xyz.size(), D::Vec2{{ 0, 0 }});
-      if(!D::filled_disk_tutte<Eigen_solver>(P, uv))
-        return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "initial map: the Tutte solve of the disk with filled holes failed");
+      code = start_with_holes<Eigen_solver>(P, uv, all_finite, start);
+      if(code != OK) return fail(code, "initial map: " + start);
       R.seconds_initial += std::chrono::duration<double>(Clock::now() - t1).count();
     }
     R.initial_uv.assign(uv.begin(), uv.begin() + std::ptrdiff_t(vertex_of.size()));
     code = D::flow_disk(P, uv, m_options, m_solver_traits.solver(), R, tutte.get());
     if(code != OK) {
-      if(int(code) == int(ERROR_INITIAL_MAP_FOLDED) && P.fill_faces > 0)
-        R.message += " (the start on the disk with filled holes: Tutte's embedding inside the initial map's outer loop, "
-                     "bijective only when that loop is convex)";
+      if(int(code) == int(ERROR_INITIAL_MAP_FOLDED) && P.fill_faces > 0) R.message += " (the start on the disk with filled holes: " + start + ")";
       return code;
     }
     if(P.fill_faces > 0)
       R.message = (R.converged() ? std::string("Success") : R.message) + "; " + std::to_string(P.holes) + (P.holes == 1 ? " hole" : " holes") +
-                  " filled for the flow and left free; initial map: Tutte's embedding of the filled disk "
-                  "inside the initial parameterizer's outer loop";
+                  " filled for the flow and left free; initial map: " + start;
     for(std::size_t i = 0; i < vertex_of.size(); ++i) put(uvmap, vertex_of[i], Point_2(uv[i][0], uv[i][1]));
     // On a Surface_mesh, the area elements and the densities become properties of the mesh.
     D::store_area_elements(mesh, vertex_of, R.target_area, R.domain_area, face_of, R.face_density);
@@ -295,6 +590,107 @@ private:
     tutte.reset(new D::Tutte_interior_system<EigenSolver>(P, uv.size(), m_solver_traits.solver()));
     if(tutte->unknowns() > 0 && !tutte->factorized()) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
     return tutte->solve(uv) ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  }
+
+  // The start of a disk with holes: the initial map itself, each hole's
+  // virtual vertex inside the hole (unless the initial parameterizer is the
+  // package's Tutte start, whose own map of the filled disk is the same kind
+  // of map); else Tutte's embedding of the filled disk inside the initial
+  // map's outer loop; else, when that folds, on the circle by arc length.
+  // Each start is taken only if the exact predicate finds every face, the
+  // fill's included, with one orientation. `start` names the start taken.
+  template <class EigenSolver>
+  Error_code start_with_holes(internal::dlf::Disk_problem& P, std::vector<internal::dlf::Vec2>& uv, bool all_finite,
+                              std::string& start) const
+  {
+    namespace D = internal::dlf;
+    std::string why;
+    if(!internal::dlf::Is_symmetric_barycentric<Initial_parameterizer>::value) {
+      if(!all_finite) why = "the initial map has non-finite coordinates";
+      else if(place_hole_vertices(P, uv, why) && one_orientation(P, uv)) {
+        start = "the initial parameterizer's map, each hole's virtual vertex inside the hole";
+        return OK;
+      }
+      else if(why.empty()) why = "the initial map folds";
+      why = "the initial parameterizer's map was not kept: " + why + "; ";
+    }
+    const std::vector<D::Vec2> given(uv);
+    if(!D::filled_disk_tutte<EigenSolver>(P, uv))
+      { start = why + "the Tutte solve of the disk with filled holes failed"; return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM; }
+    if(one_orientation(P, uv)) {
+      start = why + "Tutte's embedding of the filled disk inside the initial parameterizer's outer loop";
+      return OK;
+    }
+    // A non-convex outer loop: the circle, whose Tutte embedding is bijective.
+    uv = given;
+    if(!D::circle_border_by_arc_length(P, uv))
+      { start = why + "the outer loop is too short for the circle"; return ERROR_BORDER_TOO_SHORT; }
+    if(!D::filled_disk_tutte<EigenSolver>(P, uv))
+      { start = why + "the Tutte solve of the disk with filled holes failed"; return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM; }
+    start = why + "Tutte's embedding inside the outer loop folds (a non-convex loop); fallback: Tutte's embedding of the "
+                  "filled disk on the circle by arc length";
+    return OK;
+  }
+
+  // Whether every face of `P` has one orientation under `uv`, by the exact predicate.
+  static bool one_orientation(const internal::dlf::Disk_problem& P, const std::vector<internal::dlf::Vec2>& uv)
+  {
+    const internal::dlf::Orientation_count oc = internal::dlf::count_orientations_2(uv, P.faces);
+    return oc.degenerate == 0 && (oc.inverted == 0 || oc.inverted == P.faces.size());
+  }
+
+  // Places each hole's virtual vertex inside the kernel of its uv polygon
+  // (the points that see every loop edge from the fill's side): the kernel
+  // is clipped from the loop's bounding box edge by edge, and its vertex
+  // mean taken. False, with `why`, when a hole has an empty kernel.
+  static bool place_hole_vertices(const internal::dlf::Disk_problem& P, std::vector<internal::dlf::Vec2>& uv, std::string& why)
+  {
+    namespace D = internal::dlf;
+    // The caller's orientation: the sign of the signed area of its faces.
+    double twice_area = 0;
+    for(std::size_t f = 0; f < P.caller_faces(); ++f) {
+      const D::Vec2 &a = uv[std::size_t(P.faces[f][0])], &b = uv[std::size_t(P.faces[f][1])], &c = uv[std::size_t(P.faces[f][2])];
+      twice_area += (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    }
+    const double sign = twice_area < 0 ? -1 : 1;
+    // Fill faces (a, b, c) come hole by hole, c the hole's virtual vertex.
+    std::size_t f = P.caller_faces();
+    while(f < P.faces.size()) {
+      const int c = P.faces[f][2];
+      std::vector<std::array<D::Vec2, 2> > edges; // oriented so that the kernel is on their left
+      D::Vec2 lo = uv[std::size_t(P.faces[f][0])], hi = lo;
+      for(; f < P.faces.size() && P.faces[f][2] == c; ++f) {
+        const D::Vec2 &a = uv[std::size_t(P.faces[f][0])], &b = uv[std::size_t(P.faces[f][1])];
+        edges.push_back(sign > 0 ? std::array<D::Vec2, 2>{{ a, b }} : std::array<D::Vec2, 2>{{ b, a }});
+        for(int k = 0; k < 2; ++k) { lo[std::size_t(k)] = (std::min)(lo[std::size_t(k)], a[std::size_t(k)]); hi[std::size_t(k)] = (std::max)(hi[std::size_t(k)], a[std::size_t(k)]); }
+      }
+      std::vector<D::Vec2> kernel{{ lo, D::Vec2{{ hi[0], lo[1] }}, hi, D::Vec2{{ lo[0], hi[1] }} }};
+      for(const std::array<D::Vec2, 2>& e : edges) {
+        auto side = [&e](const D::Vec2& p) {
+          return (e[1][0] - e[0][0]) * (p[1] - e[0][1]) - (e[1][1] - e[0][1]) * (p[0] - e[0][0]);
+        };
+        std::vector<D::Vec2> clipped;
+        for(std::size_t i = 0; i < kernel.size(); ++i) {
+          const D::Vec2 &p = kernel[i], &q = kernel[(i + 1) % kernel.size()];
+          const double sp = side(p), sq = side(q);
+          if(sp >= 0) clipped.push_back(p);
+          if((sp > 0 && sq < 0) || (sp < 0 && sq > 0)) {
+            const double t = sp / (sp - sq);
+            clipped.push_back(D::Vec2{{ p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]) }});
+          }
+        }
+        kernel.swap(clipped);
+        if(kernel.empty()) break;
+      }
+      if(kernel.size() < 3) {
+        why = "a hole's uv polygon (" + std::to_string(edges.size()) + " edges) is not star-shaped: no point inside sees all of it";
+        return false;
+      }
+      D::Vec2 m{{ 0, 0 }};
+      for(const D::Vec2& p : kernel) { m[0] += p[0] / double(kernel.size()); m[1] += p[1] / double(kernel.size()); }
+      uv[std::size_t(c)] = m;
+    }
+    return true;
   }
 
   // A face named by the indices of its vertices, the only names every mesh type shares.
@@ -515,14 +911,19 @@ Error_code parameterize(TriangleMesh& mesh,
                         Discrete_lie_flow_parameterizer_3<TriangleMesh, InitialParameterizer, SolverTraits>& parameterizer,
                         HD bhd, VertexUVmap uvmap)
 {
-  typedef CGAL::dynamic_vertex_property_t<int> Vertex_int_tag;
-  typename boost::property_map<TriangleMesh, Vertex_int_tag>::type vimap = get(Vertex_int_tag(), mesh);
-  // A halfedge that is not on a border is reported by the parameterizer.
-  if(bhd != boost::graph_traits<TriangleMesh>::null_halfedge() && is_border(bhd, mesh))
-    internal::fill_index_map_of_cc(bhd, mesh, vimap);
-  typedef CGAL::dynamic_vertex_property_t<bool> Vertex_bool_tag;
-  typename boost::property_map<TriangleMesh, Vertex_bool_tag>::type vpmap = get(Vertex_bool_tag(), mesh);
-  return parameterizer.parameterize(mesh, bhd, uvmap, vimap, vpmap);
+  return parameterizer.parameterize(mesh, bhd, uvmap);
+}
+
+/// \ingroup PkgDiscreteLieFlowParameterizers
+/// CGAL's `parameterize(mesh, Parameterizer(), bhd, uvmap)` for a temporary
+/// `Discrete_lie_flow_parameterizer_3`: the same as for a named one (a
+/// halfedge that is not on a border is reported, not dereferenced).
+template <class TriangleMesh, class InitialParameterizer, class SolverTraits, class HD, class VertexUVmap>
+Error_code parameterize(TriangleMesh& mesh,
+                        Discrete_lie_flow_parameterizer_3<TriangleMesh, InitialParameterizer, SolverTraits>&& parameterizer,
+                        HD bhd, VertexUVmap uvmap)
+{
+  return parameterizer.parameterize(mesh, bhd, uvmap);
 }
 
 } // namespace Surface_mesh_parameterization

@@ -76,9 +76,12 @@ public:
 
   /// @}
 
+  /// Not `explicit`, as CGAL's parameterizers: `Parameterizer p(border)`
+  /// builds one from its border parameterizer, also inside another
+  /// parameterizer that takes it as its initial map.
   /// \param border the parameterizer of the (convex) border
   /// \param solver the sparse SPD solver of the interior system
-  explicit Symmetric_barycentric_mapping_parameterizer_3(Border_parameterizer border = Border_parameterizer(),
+  Symmetric_barycentric_mapping_parameterizer_3(Border_parameterizer border = Border_parameterizer(),
                                                          Solver_traits solver = Solver_traits())
     : m_border(border), m_solver(solver)
   {}
