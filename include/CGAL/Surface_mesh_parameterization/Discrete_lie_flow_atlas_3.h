@@ -94,15 +94,20 @@ inline void flatten_atlas_chart(const Atlas_piece& piece, const Discrete_lie_flo
     chart.d_area = r.final_d_area;
     chart.message = r.message;
   };
+  // The square, where it has corners and Tutte's map on it is fold-free
+  // (three corners on one side flatten a triangle); else the circle.
   bool square = opt.border == Discrete_lie_flow_border::SQUARE && choose_square_border_corners(mesh, bhd);
   if(square) {
     flow.disk.border = Discrete_lie_flow_border::SQUARE;
-    Discrete_lie_flow_parameterizer_3<Atlas_chart_mesh, Symmetric_barycentric_mapping_parameterizer_3<Atlas_chart_mesh, Atlas_square_border> >
-      parameterizer({}, flow);
+    typedef Symmetric_barycentric_mapping_parameterizer_3<Atlas_chart_mesh, Atlas_square_border> Square_tutte;
+    Discrete_lie_flow_parameterizer_3<Atlas_chart_mesh, Square_tutte> parameterizer(Square_tutte(), flow);
     run(parameterizer);
-  } else {
+    square = chart.code == OK;
+  }
+  if(!square) {
     flow.disk.border = Discrete_lie_flow_border::CIRCLE;
-    Discrete_lie_flow_parameterizer_3<Atlas_chart_mesh> parameterizer({}, flow);
+    typedef Discrete_lie_flow_parameterizer_3<Atlas_chart_mesh> Circle_flow;
+    Circle_flow parameterizer(Circle_flow::Initial_parameterizer(), flow);
     run(parameterizer);
   }
   if(chart.code != OK) return;
@@ -274,11 +279,19 @@ Discrete_lie_flow_atlas_report discrete_lie_flow_atlas(const TriangleMesh& mesh,
     uv[c].swap(charts[c].uv);
   }
   double stretch = 1;
-  const double s = options.stretch_to_fill ? D::fill_charts(uv, options.gutter, stretch) : D::pack_charts(uv, options.gutter);
+  bool filled = options.stretch_to_fill;
+  const std::vector<std::vector<D::Vec2> > unplaced = uv;
+  double s = filled ? D::fill_charts(uv, options.gutter, stretch) : 0.;
+  if(!(s > 0)) { // no room for the gutter in some cell: shelves
+    uv = unplaced;
+    filled = false;
+    stretch = 1;
+    s = D::pack_charts(uv, options.gutter);
+  }
   if(!(s > 0))
     return fail(ERROR_WRONG_PARAMETER, "the " + std::to_string(charts.size()) + " charts do not fit in the unit square with a gutter of " +
                 std::to_string(options.gutter));
-  R.scale = (options.stretch_to_fill ? s : s * s) / total;
+  R.scale = (filled ? s : s * s) / total;
   R.max_chart_stretch = stretch;
 
   // Per corner: the uv, and the chart vertex (for the seam).

@@ -35,6 +35,14 @@ struct Atlas_chart
   Discrete_lie_flow_atlas_chart report;
 };
 
+/// One piece per face of `P`.
+inline std::vector<Atlas_piece> single_faces(const Atlas_piece& P)
+{
+  std::vector<Atlas_piece> out;
+  for(std::size_t f = 0; f < P.faces.size(); ++f) out.push_back(sub_piece(P, std::vector<std::size_t>(1, f)));
+  return out;
+}
+
 /// Cuts and flattens `components` into charts. `flatten(piece, uv, chart)`
 /// fills `uv` (all triangles positive) and the chart's code, stop reason,
 /// iterations and D_area. Returns `OK`, or the code of a chart that could
@@ -68,10 +76,9 @@ Error_code make_atlas_charts(std::vector<Atlas_piece> components, const Discrete
     if(!chart) { // a cut left something else than a disk: halve it
       std::vector<Atlas_piece> halves = split_piece(it.piece, twin);
       R.seconds_cut += std::chrono::duration<double>(Clock::now() - t0).count();
-      if(halves.size() < 2 || it.depth >= opt.max_split_depth + 4) {
-        R.message = "a piece of " + std::to_string(it.piece.faces.size()) + " faces could not be cut into disks";
-        return ERROR_NO_TOPOLOGICAL_DISC;
-      }
+      // Tiny closed pieces (a tetrahedron) may have no seam that leaves a
+      // disk with a triangle between seams: one chart per triangle then.
+      if(halves.size() < 2 || it.depth >= opt.max_split_depth + 4) halves = single_faces(it.piece);
       for(Atlas_piece& h : halves) work.push_back(Item{ std::move(h), it.depth + 1, false });
       continue;
     }
@@ -98,6 +105,10 @@ Error_code make_atlas_charts(std::vector<Atlas_piece> components, const Discrete
         for(Atlas_piece& h : halves) work.push_back(Item{ std::move(h), it.depth + 1, false });
         continue;
       }
+    }
+    if(C.report.code != OK && it.piece.faces.size() > 1) { // no split left: one chart per triangle
+      for(Atlas_piece& h : single_faces(it.piece)) work.push_back(Item{ std::move(h), it.depth + 1, false });
+      continue;
     }
     if(C.report.code != OK) {
       R.message = "a chart of " + std::to_string(C.report.faces) + " faces: " + C.report.message;

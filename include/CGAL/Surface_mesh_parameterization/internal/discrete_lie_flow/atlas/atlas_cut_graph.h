@@ -130,6 +130,58 @@ inline std::vector<int> piece_tips(const Closed_surface& S, std::size_t k)
   return tips;
 }
 
+/// A shortest path from the `start` vertices (marked 1) to the seam
+/// (marked 2) that leaves no triangle with all three corners on seams or
+/// borders: it leaves the start and reaches the seam across edges whose
+/// two triangles have their third corner free (mark 0), and in between
+/// touches no vertex next to the start, to the seam (but for its last
+/// step), or to a rim of a hole not joined yet (mark 3). The halfedges from
+/// the start to the seam; empty if there is none.
+inline std::vector<long> fenced_path(const Closed_surface& S, const std::vector<int>& start, const std::vector<char>& mark)
+{
+  const std::size_t V = S.vertices();
+  std::vector<char> near_seam(V, 0), near_other(V, 0);
+  for(std::size_t h = 0; h < S.twin.size(); ++h) {
+    const int a = S.from(h), b = S.to(h);
+    if(mark[std::size_t(a)] == 2) near_seam[std::size_t(b)] = 1;
+    if(mark[std::size_t(a)] == 1 || mark[std::size_t(a)] == 3) near_other[std::size_t(b)] = 1;
+  }
+  auto good = [&](std::size_t h) {
+    const std::size_t o = std::size_t(S.twin[h]);
+    return mark[std::size_t(S.faces[h / 3][(h % 3 + 2) % 3])] == 0 && mark[std::size_t(S.faces[o / 3][(o % 3 + 2) % 3])] == 0;
+  };
+  std::vector<double> dist(V, std::numeric_limits<double>::infinity());
+  std::vector<long> via(V, -1);
+  typedef std::pair<double, int> Item;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item> > q;
+  for(int s : start) { dist[std::size_t(s)] = 0; q.emplace(0., s); }
+  int end = -1;
+  while(!q.empty()) {
+    const Item it = q.top();
+    q.pop();
+    const std::size_t u = std::size_t(it.second);
+    if(it.first > dist[u]) continue;
+    if(mark[u] == 2) { end = int(u); break; }
+    for(std::size_t k = S.out_begin[u]; k < S.out_begin[u + 1]; ++k) {
+      const std::size_t h = S.out[k];
+      const std::size_t v = std::size_t(S.to(h));
+      bool ok;
+      if(mark[v] == 2) ok = good(h);
+      else if(mark[v] != 0) ok = false;
+      else if(mark[u] == 1) ok = good(h); // leaving the start
+      else ok = !near_other[v] && !near_seam[u]; // next to the seam, the only way is onto it
+      if(!ok) continue;
+      const double d = it.first + S.length[h];
+      if(d < dist[v]) { dist[v] = d; via[v] = long(h); q.emplace(d, int(v)); }
+    }
+  }
+  std::vector<long> path;
+  if(end < 0) return path;
+  for(int v = end; via[std::size_t(v)] >= 0; v = S.from(std::size_t(via[std::size_t(v)]))) path.push_back(via[std::size_t(v)]);
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
 /// The cut graph of the closed surface `S` through `tips` (at least one),
 /// as a flag per canonical halfedge (`S.edge(h)`). Cutting along it
 /// leaves one disk; with one tip and genus 0 it is empty.
@@ -141,20 +193,76 @@ inline std::vector<char> cut_graph(const Closed_surface& S, const std::vector<in
   std::vector<long> parent(V, -1); // halfedge into v from its parent, in the primal tree
   std::vector<double> dist;
   std::vector<long> via;
-  // The tips' tree: each next tip, the nearest, by a shortest path to the tree so far.
+  // The tips' tree: each next tip, the nearest, by a fenced path to the
+  // tree so far (a plain shortest path where no fenced one exists).
   std::vector<int> on_tree(1, tips[0]);
   std::vector<char> joined(tips.size(), 0);
   joined[0] = 1;
+  // Fencing marks: 0 free, 1 the start, 2 on the seam (and the rims of
+  // joined holes), 3 the rims of holes not joined yet.
+  std::vector<char> mark(V, 0);
+  std::vector<int> loop_of(V, -1); // the hole of a rim vertex (capped pieces)
+  std::vector<std::vector<int> > rim(tips.size());
+  for(std::size_t k = 0; k < tips.size(); ++k)
+    if(std::size_t(tips[k]) >= S.real_vertices)
+      for(std::size_t i = S.out_begin[std::size_t(tips[k])]; i < S.out_begin[std::size_t(tips[k]) + 1]; ++i) {
+        rim[k].push_back(S.to(S.out[i]));
+        loop_of[std::size_t(S.to(S.out[i]))] = int(k);
+      }
+  auto set_mark = [&](std::size_t k, char m) {
+    mark[std::size_t(tips[k])] = m;
+    for(int r : rim[k]) mark[std::size_t(r)] = m;
+  };
+  for(std::size_t k = 1; k < tips.size(); ++k) set_mark(k, 3);
+  set_mark(0, 2);
+  auto spoke = [&](int center, int r) { // the halfedge centre → r
+    for(std::size_t i = S.out_begin[std::size_t(center)]; i < S.out_begin[std::size_t(center) + 1]; ++i)
+      if(S.to(S.out[i]) == r) return long(S.out[i]);
+    return -1L;
+  };
+  std::vector<char> in_graph(V, 0);
+  in_graph[std::size_t(tips[0])] = 1;
+  // Adds the path `hs` (halfedges from the start towards the seam) with
+  // parents pointing towards the seam, and the spokes that tie it to the centres.
+  auto add_path = [&](std::vector<long> hs, int center) {
+    if(center >= 0) hs.insert(hs.begin(), spoke(center, S.from(std::size_t(hs.front()))));
+    const int end = S.to(std::size_t(hs.back()));
+    if(!in_graph[std::size_t(end)] && loop_of[std::size_t(end)] >= 0) hs.push_back(S.twin[std::size_t(spoke(tips[std::size_t(loop_of[std::size_t(end)])], end))]);
+    for(long h : hs) {
+      const int a = S.from(std::size_t(h)), b = S.to(std::size_t(h));
+      if(!in_graph[std::size_t(a)]) { parent[std::size_t(a)] = S.twin[std::size_t(h)]; in_graph[std::size_t(a)] = 1; on_tree.push_back(a); }
+      cut[S.edge(std::size_t(h))] = 1;
+      mark[std::size_t(a)] = mark[std::size_t(b)] = 2;
+    }
+  };
   for(std::size_t added = 1; added < tips.size(); ++added) {
     cut_dijkstra(S, on_tree, dist, via);
     std::size_t next = tips.size();
     for(std::size_t k = 0; k < tips.size(); ++k)
       if(!joined[k] && (next == tips.size() || dist[std::size_t(tips[k])] < dist[std::size_t(tips[next])])) next = k;
     joined[next] = 1;
-    for(int v = tips[next]; via[std::size_t(v)] >= 0; v = S.from(std::size_t(via[std::size_t(v)]))) {
-      parent[std::size_t(v)] = via[std::size_t(v)];
-      cut[S.edge(std::size_t(via[std::size_t(v)]))] = 1;
-      on_tree.push_back(v);
+    if(in_graph[std::size_t(tips[next])]) continue;
+    const bool capped = std::size_t(tips[next]) >= S.real_vertices;
+    std::vector<int> start = capped ? rim[next] : std::vector<int>(1, tips[next]);
+    set_mark(next, 1);
+    std::vector<long> hs = fenced_path(S, start, mark);
+    if(!hs.empty()) {
+      set_mark(next, 2);
+      add_path(hs, capped ? tips[next] : -1);
+      continue;
+    }
+    set_mark(next, 2);
+    // No fenced path: the plain shortest path to the tree.
+    std::vector<long> plain;
+    for(int v = tips[next]; via[std::size_t(v)] >= 0; v = S.from(std::size_t(via[std::size_t(v)])))
+      plain.push_back(S.twin[std::size_t(via[std::size_t(v)])]);
+    for(long h : plain) {
+      const int a = S.from(std::size_t(h)), b = S.to(std::size_t(h));
+      parent[std::size_t(a)] = S.twin[std::size_t(h)];
+      cut[S.edge(std::size_t(h))] = 1;
+      in_graph[std::size_t(a)] = in_graph[std::size_t(b)] = 1;
+      mark[std::size_t(a)] = mark[std::size_t(b)] = 2;
+      on_tree.push_back(a);
     }
   }
   // The primal tree: the tips' tree, then shortest paths to it.
@@ -249,6 +357,120 @@ inline std::size_t shorten_cut(const Closed_surface& S, std::vector<char>& cut)
   return replaced;
 }
 
+/// The real triangles of `S` whose three corners lie on the cut or on a
+/// border (a rim of a cap): after the cut, each has three border corners.
+inline std::vector<std::size_t> cut_tbc_faces(const Closed_surface& S, const std::vector<char>& cut)
+{
+  std::vector<char> on(S.vertices(), 0);
+  for(std::size_t h = 0; h < cut.size(); ++h) {
+    const bool virtual_edge = std::size_t(S.to(h)) >= S.real_vertices;
+    if(cut[S.edge(h)] || virtual_edge) on[std::size_t(S.from(h))] = 1;
+  }
+  std::vector<std::size_t> out;
+  for(std::size_t f = 0; f < S.real_faces; ++f)
+    if(on[std::size_t(S.faces[f][0])] && on[std::size_t(S.faces[f][1])] && on[std::size_t(S.faces[f][2])]) out.push_back(f);
+  return out;
+}
+
+/// Whether cutting `P` along `cut` (of its closed surface `S`) leaves one disk.
+inline bool cut_leaves_disk(const Atlas_piece& P, const std::vector<long>& twin, const Closed_surface& S,
+                            const std::vector<char>& cut)
+{
+  std::vector<char> seam(twin.size(), 0);
+  for(std::size_t h = 0; h < twin.size(); ++h) seam[h] = twin[h] >= 0 && cut[S.edge(h)];
+  Atlas_piece opened = P;
+  const std::vector<long> t0 = twin;
+  open_along(opened, t0, seam);
+  std::vector<long> t = halfedge_twins(opened.faces);
+  std::vector<int> component;
+  if(face_components(opened.faces, t, component) != 1) return false;
+  return piece_topology(opened, t).disk();
+}
+
+/// Removes the cut edges at the vertices of `window` and joins their loose
+/// ends again by fenced paths (`fenced_path()`): the first end is the seam,
+/// the rest of the cut and the rims are fenced off. False if some end
+/// cannot be joined.
+inline bool reroute_window(const Closed_surface& S, const std::vector<int>& window, std::vector<char>& trial)
+{
+  std::vector<char> removed_at(S.vertices(), 0);
+  for(int c : window)
+    for(std::size_t i = S.out_begin[std::size_t(c)]; i < S.out_begin[std::size_t(c) + 1]; ++i) {
+      const std::size_t h = S.out[i];
+      if(trial[S.edge(h)] && std::size_t(S.to(h)) < S.real_vertices) {
+        trial[S.edge(h)] = 0;
+        removed_at[std::size_t(c)] = removed_at[std::size_t(S.to(h))] = 1;
+      }
+    }
+  std::vector<int> degree(S.vertices(), 0);
+  for(std::size_t h = 0; h < trial.size(); ++h)
+    if(trial[h] && S.edge(h) == h) { ++degree[std::size_t(S.from(h))]; ++degree[std::size_t(S.to(h))]; }
+  std::vector<int> ends;
+  for(std::size_t v = 0; v < S.vertices(); ++v)
+    if(removed_at[v] && degree[v] > 0) ends.push_back(int(v));
+  if(ends.size() < 2) return false;
+  std::vector<char> mark(S.vertices(), 0);
+  for(std::size_t h = 0; h < trial.size(); ++h)
+    if(trial[S.edge(h)] || std::size_t(S.to(h)) >= S.real_vertices) mark[std::size_t(S.from(h))] = 3;
+  for(std::size_t v = S.real_vertices; v < S.vertices(); ++v) mark[v] = 3;
+  mark[std::size_t(ends[0])] = 2;
+  for(std::size_t k = 1; k < ends.size(); ++k) {
+    if(mark[std::size_t(ends[k])] == 2) continue;
+    mark[std::size_t(ends[k])] = 1;
+    const std::vector<long> path = fenced_path(S, { ends[k] }, mark);
+    if(path.empty()) return false;
+    for(long h : path) {
+      trial[S.edge(std::size_t(h))] = 1;
+      mark[std::size_t(S.from(std::size_t(h)))] = mark[std::size_t(S.to(std::size_t(h)))] = 2;
+    }
+  }
+  return true;
+}
+
+/// Reroutes the cut around each triangle that it would leave with three
+/// border corners: the cut edges at the triangle's corners are removed and
+/// their loose ends joined again by fenced paths (`fenced_path()`), which
+/// keep a triangle between seams. A change is kept only if the cut still
+/// leaves one disk and fewer such triangles. Returns the triangles left.
+inline std::size_t repair_cut(const Atlas_piece& P, const std::vector<long>& twin, const Closed_surface& S,
+                              std::vector<char>& cut)
+{
+  std::vector<std::size_t> bad = cut_tbc_faces(S, cut);
+  std::vector<char> tried(S.real_faces, 0);
+  for(std::size_t round = 0; round < 16 * bad.size() + 8 && !bad.empty(); ++round) {
+    std::size_t f = S.real_faces;
+    for(std::size_t g : bad)
+      if(!tried[g]) { f = g; break; }
+    if(f == S.real_faces) break;
+    tried[f] = 1;
+    bool fixed = false;
+    // Windows of growing size around the triangle: its corners, then their
+    // neighbours, then theirs.
+    std::vector<int> window(S.faces[f].begin(), S.faces[f].end());
+    for(int radius = 1; radius <= 5 && !fixed; ++radius) {
+      if(radius > 1) {
+        const std::vector<int> inner = window;
+        for(int c : inner)
+          for(std::size_t i = S.out_begin[std::size_t(c)]; i < S.out_begin[std::size_t(c) + 1]; ++i)
+            if(std::size_t(S.to(S.out[i])) < S.real_vertices) window.push_back(S.to(S.out[i]));
+        std::sort(window.begin(), window.end());
+        window.erase(std::unique(window.begin(), window.end()), window.end());
+      }
+      std::vector<char> trial = cut;
+      if(!reroute_window(S, window, trial)) continue;
+      shorten_cut(S, trial);
+      const std::vector<std::size_t> now = cut_tbc_faces(S, trial);
+      if(now.size() < bad.size() && cut_leaves_disk(P, twin, S, trial)) {
+        cut.swap(trial);
+        bad = now;
+        fixed = true;
+      }
+    }
+    if(fixed) std::fill(tried.begin(), tried.end(), 0); // the cut changed: the others may be fixable now
+  }
+  return bad.size();
+}
+
 /// The seam of a connected piece that is not a disk nor a genus-0 piece with
 /// holes: per halfedge of `P`, whether it is cut (both halves flagged).
 /// Closed pieces are cut through `tips` tips (at least 2); pieces with
@@ -264,6 +486,7 @@ inline std::vector<char> piece_seam(const Atlas_piece& P, const std::vector<long
     for(std::size_t l = 0; l < T.loops.size(); ++l) tips.push_back(int(S.real_vertices + l));
   std::vector<char> cut = cut_graph(S, tips);
   shorten_cut(S, cut);
+  repair_cut(P, twin, S, cut);
   std::vector<char> seam(twin.size(), 0);
   seam_length = 0;
   for(std::size_t h = 0; h < twin.size(); ++h)

@@ -164,17 +164,28 @@ inline double fill_charts(std::vector<std::vector<Vec2> >& uv, double gutter, do
     area[c] = box[c].width() * box[c].height();
     if(!(area[c] > 0)) return 0;
   }
-  const std::vector<Box2> cell = squarified_cells(area);
   // One scale for all: the chart's box takes `s` times its area, inside
-  // the cell less the gutter (and a relative margin for rounding).
+  // its cell less the gutter (and a relative margin for rounding). The
+  // cells are sized for the box and its gutter: (√(s·area) + gutter)², `s`
+  // from the previous round.
   const double margin = 1e-12;
-  double s = std::numeric_limits<double>::infinity();
-  std::vector<double> W(n), H(n);
-  for(std::size_t c = 0; c < n; ++c) {
-    W[c] = (cell[c].width() - gutter) * (1 - margin);
-    H[c] = (cell[c].height() - gutter) * (1 - margin);
-    if(!(W[c] > 0 && H[c] > 0)) return 0;
-    s = (std::min)(s, W[c] * H[c] / area[c]);
+  double total = 0;
+  for(double a : area) total += a;
+  double s = 1 / total;
+  std::vector<Box2> cell;
+  std::vector<double> W(n), H(n), want(n);
+  for(int round = 0; round < 4; ++round) {
+    for(std::size_t c = 0; c < n; ++c) want[c] = std::pow(std::sqrt(s * area[c]) + gutter, 2);
+    cell = squarified_cells(want);
+    double next = std::numeric_limits<double>::infinity();
+    for(std::size_t c = 0; c < n; ++c) {
+      W[c] = (cell[c].width() - gutter) * (1 - margin);
+      H[c] = (cell[c].height() - gutter) * (1 - margin);
+      next = (W[c] > 0 && H[c] > 0) ? (std::min)(next, W[c] * H[c] / area[c]) : 0.;
+      if(!(next > 0)) break;
+    }
+    if(!(next > 0)) return 0;
+    s = next;
   }
   stretch = 1;
   for(std::size_t c = 0; c < n; ++c) {

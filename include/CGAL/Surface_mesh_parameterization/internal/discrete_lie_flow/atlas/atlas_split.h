@@ -55,9 +55,10 @@ inline std::vector<char> split_labels(const Atlas_piece& P, const std::vector<lo
   // them; a face with all corners on the interface too. Each change moves
   // a face to the side it borders most; a few passes settle it.
   for(int pass = 0; pass < 20; ++pass) {
+    // Corners on the interface or on the piece's border are border corners of a half.
     std::vector<char> on_interface(P.xyz.size(), 0);
     for(std::size_t h = 0; h < twin.size(); ++h)
-      if(twin[h] >= 0 && label[h / 3] != label[std::size_t(twin[h]) / 3]) {
+      if(twin[h] < 0 || label[h / 3] != label[std::size_t(twin[h]) / 3]) {
         on_interface[std::size_t(P.faces[h / 3][h % 3])] = 1;
         on_interface[std::size_t(P.faces[h / 3][(h % 3 + 1) % 3])] = 1;
       }
