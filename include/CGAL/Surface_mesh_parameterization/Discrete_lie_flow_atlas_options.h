@@ -18,6 +18,16 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 
 /// \ingroup PkgDiscreteLieFlowOptions
+/// The flow settings of an atlas's charts: the defaults, with an iteration
+/// cap of 150 (a chart that needs more is split).
+inline Discrete_lie_flow_options atlas_flow_defaults()
+{
+  Discrete_lie_flow_options o;
+  o.max_iterations = 150;
+  return o;
+}
+
+/// \ingroup PkgDiscreteLieFlowOptions
 /// Settings of `discrete_lie_flow_atlas()`. Defaults are the measured choices
 /// (doc/atlas.md).
 struct Discrete_lie_flow_atlas_options
@@ -25,8 +35,10 @@ struct Discrete_lie_flow_atlas_options
   /// The flow of every chart: tolerance, caps, solver threads. Its
   /// `face_density` (ρ > 0 per face, in the order of `faces(mesh)`) weighs
   /// the whole atlas: a face gets ρ times its share of the surface. The mode
-  /// must be certified (the atlas is certified fold-free).
-  Discrete_lie_flow_options flow;
+  /// must be certified (the atlas is certified fold-free). Its iteration cap
+  /// is the splitting rule: a chart whose flow has not converged after
+  /// `max_iterations` (150 here, measured in doc/atlas.md) is split.
+  Discrete_lie_flow_options flow = atlas_flow_defaults();
   /// The border of every chart: `SQUARE` (the default: a square chart fills
   /// its slot of the packing) or `CIRCLE`.
   Discrete_lie_flow_border border = Discrete_lie_flow_border::SQUARE;

@@ -74,6 +74,40 @@ inline std::vector<char> split_labels(const Atlas_piece& P, const std::vector<lo
     }
     if(!changed) break;
   }
+  // Islands: every connected part of a side but its largest joins the other side.
+  for(int pass = 0; pass < 4; ++pass) {
+    std::vector<int> part(F, -1);
+    std::vector<std::size_t> size;
+    std::vector<std::size_t> stack;
+    for(std::size_t f0 = 0; f0 < F; ++f0) {
+      if(part[f0] >= 0) continue;
+      part[f0] = int(size.size());
+      size.push_back(0);
+      stack.assign(1, f0);
+      while(!stack.empty()) {
+        const std::size_t f = stack.back();
+        stack.pop_back();
+        ++size.back();
+        for(std::size_t k = 0; k < 3; ++k) {
+          const long o = twin[3 * f + k];
+          if(o >= 0 && part[std::size_t(o) / 3] < 0 && label[std::size_t(o) / 3] == label[f]) {
+            part[std::size_t(o) / 3] = part[f0];
+            stack.push_back(std::size_t(o) / 3);
+          }
+        }
+      }
+    }
+    std::size_t biggest[2] = { 0, 0 };
+    int keep[2] = { -1, -1 };
+    for(std::size_t f = 0; f < F; ++f) {
+      const int side = label[f];
+      if(size[std::size_t(part[f])] > biggest[side]) { biggest[side] = size[std::size_t(part[f])]; keep[side] = part[f]; }
+    }
+    bool changed = false;
+    for(std::size_t f = 0; f < F; ++f)
+      if(part[f] != keep[int(label[f])]) { label[f] = char(1 - label[f]); changed = true; }
+    if(!changed) break;
+  }
   return label;
 }
 
