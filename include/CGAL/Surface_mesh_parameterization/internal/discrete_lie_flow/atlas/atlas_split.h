@@ -1,11 +1,13 @@
 // Copyright (c) 2026 The Discrete Lie Flow authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Splitting a poor chart in two: the faces nearer (geodesically) to one of
-// two far-apart seeds than to the other, the interface then smoothed so
-// that no triangle is left with two interface edges or with all three
-// corners on the interface (such triangles would have three border
-// corners in their chart, the flow's floor).
+// Splitting a poor chart in two. First choice: a cut along a fenced
+// shortest path (atlas_cut_graph.h) between the two points of the outer
+// border where the geodesic bisector of two far-apart seeds meets it, so
+// that no triangle gets three border corners. Where no such path exists:
+// the faces nearer to one seed than to the other, the interface smoothed
+// so that no triangle has two interface edges or all three corners on
+// borders, islands joined to their side.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_ATLAS_SPLIT_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_ATLAS_SPLIT_H
@@ -111,9 +113,103 @@ inline std::vector<char> split_labels(const Atlas_piece& P, const std::vector<lo
   return label;
 }
 
-/// The pieces of `P` on either side of `split_labels()`, one per connected part.
+/// A cut of the piece `P` (a disk, or genus 0 with holes) along a fenced
+/// path across its outer border, between the points where the geodesic
+/// bisector of two far-apart vertices meets it; per halfedge, empty if none.
+inline std::vector<char> chord_seam(const Atlas_piece& P, const std::vector<long>& twin)
+{
+  const Piece_topology T = piece_topology(P, twin);
+  if(T.loops.empty()) return std::vector<char>();
+  const Closed_surface S = close_surface(P, T);
+  Closed_surface D = S; // distances on the piece's own edges
+  for(std::size_t h = 0; h < D.length.size(); ++h)
+    if(std::size_t(D.from(h)) >= D.real_vertices || std::size_t(D.to(h)) >= D.real_vertices)
+      D.length[h] = std::numeric_limits<double>::infinity();
+  std::vector<double> d0, d1;
+  std::vector<long> via;
+  cut_dijkstra(D, { P.faces[0][0] }, d0, via);
+  auto farthest = [&D](const std::vector<double>& d) {
+    int best = 0;
+    for(std::size_t v = 0; v < D.real_vertices; ++v)
+      if(std::isfinite(d[v]) && d[v] > d[std::size_t(best)]) best = int(v);
+    return best;
+  };
+  const int p = farthest(d0);
+  cut_dijkstra(D, { p }, d0, via);
+  const int q = farthest(d0);
+  cut_dijkstra(D, { q }, d1, via);
+  // The outer (longest) loop, and where d0 − d1 changes sign along it.
+  std::size_t outer = 0;
+  double longest = -1;
+  for(std::size_t l = 0; l < T.loops.size(); ++l) {
+    double len = 0;
+    for(std::size_t h : T.loops[l]) len += S.length[h];
+    if(len > longest) { longest = len; outer = l; }
+  }
+  const std::vector<std::size_t>& loop = T.loops[outer];
+  // Where d0 − d1 changes sign along the loop: the two changes (one each
+  // way) farthest apart along it.
+  std::vector<long> up, down;
+  for(std::size_t k = 0; k < loop.size(); ++k) {
+    const int u = P.faces[loop[k] / 3][loop[k] % 3], w = P.faces[loop[k] / 3][(loop[k] % 3 + 1) % 3];
+    const double fu = d0[std::size_t(u)] - d1[std::size_t(u)], fw = d0[std::size_t(w)] - d1[std::size_t(w)];
+    if(fu < 0 && fw >= 0) up.push_back(long(k));
+    if(fu >= 0 && fw < 0) down.push_back(long(k));
+  }
+  long ka = -1, kb = -1, apart = -1;
+  const long n = long(loop.size());
+  for(long i : up)
+    for(long j : down) {
+      const long d = (std::min)(std::abs(i - j), n - std::abs(i - j));
+      if(d > apart) { apart = d; ka = i; kb = j; }
+    }
+  if(ka < 0 || n < 12) return std::vector<char>();
+  // From the border vertices near the first place to those near the second
+  // (a path can leave a border vertex only between two triangles whose third
+  // corners are inside), fenced off every other border vertex and the caps.
+  std::vector<char> mark(S.vertices(), 0);
+  for(std::size_t h = 0; h < S.twin.size(); ++h)
+    if(std::size_t(S.to(h)) >= S.real_vertices) mark[std::size_t(S.from(h))] = 3;
+  for(std::size_t v = S.real_vertices; v < S.vertices(); ++v) mark[v] = 3;
+  const long window = (std::min)(8L, apart / 3);
+  std::vector<int> start;
+  for(long d = -window; d <= window; ++d) {
+    const std::size_t ha = loop[std::size_t(((ka + d) % n + n) % n)], hb = loop[std::size_t(((kb + d) % n + n) % n)];
+    const int va = P.faces[ha / 3][ha % 3], vb = P.faces[hb / 3][hb % 3];
+    if(mark[std::size_t(va)] == 3) { mark[std::size_t(va)] = 1; start.push_back(va); }
+    if(mark[std::size_t(vb)] == 3) mark[std::size_t(vb)] = 2;
+  }
+  // Along the bisector: an edge costs more the farther it is from it.
+  Closed_surface B = S;
+  const double diameter = d0[std::size_t(q)];
+  for(std::size_t h = 0; h < B.length.size(); ++h) {
+    const std::size_t u = std::size_t(B.from(h)), w = std::size_t(B.to(h));
+    if(u < B.real_vertices && w < B.real_vertices)
+      B.length[h] *= 1 + 20 * std::abs(d0[u] - d1[u] + d0[w] - d1[w]) / (2 * diameter);
+  }
+  const std::vector<long> path = fenced_path(B, start, mark);
+  if(path.empty()) return std::vector<char>();
+  std::vector<char> seam(twin.size(), 0);
+  for(long h : path) {
+    if(twin[std::size_t(h)] < 0) return std::vector<char>();
+    seam[std::size_t(h)] = seam[std::size_t(twin[std::size_t(h)])] = 1;
+  }
+  return seam;
+}
+
+/// The pieces of `P` on either side of a chord (`chord_seam()`), else of
+/// `split_labels()`, one per connected part.
 inline std::vector<Atlas_piece> split_piece(const Atlas_piece& P, const std::vector<long>& twin)
 {
+  const std::vector<char> chord = chord_seam(P, twin);
+  if(!chord.empty()) {
+    Atlas_piece opened = P;
+    open_along(opened, twin, chord);
+    std::vector<Atlas_piece> parts = split_components(opened);
+    std::size_t smallest = P.faces.size();
+    for(const Atlas_piece& part : parts) smallest = (std::min)(smallest, part.faces.size());
+    if(parts.size() >= 2 && smallest * 100 >= 15 * P.faces.size()) return parts; // else: a corner, not a half
+  }
   const std::vector<char> label = split_labels(P, twin);
   std::vector<Atlas_piece> out;
   for(char side = 0; side < 2; ++side) {
