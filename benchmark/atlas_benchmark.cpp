@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Discrete Lie Flow authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The atlas on a list of meshes, one row each: components, genus, charts,
+// The atlas on a list of meshes, one row each: components, closed ones, genus, charts,
 // splits, seam length (relative to √area), packing efficiency, global
 // D_area, inverted and degenerate uv triangles, overlapping chart pairs,
 // unconverged charts, seconds. Polygons are triangulated first.
@@ -27,7 +27,7 @@ namespace SMP = CGAL::Surface_mesh_parameterization;
 int main(int argc, char** argv)
 {
   SMP::Discrete_lie_flow_atlas_options opt;
-  std::printf("%-28s %7s %4s %4s %6s %6s %7s %6s %8s %4s %4s %4s %4s %8s %4s %7s\n", "mesh", "faces", "cc", "g", "charts",
+  std::printf("%-28s %7s %4s %4s %4s %6s %6s %7s %6s %8s %4s %4s %4s %4s %8s %4s %7s\n", "mesh", "faces", "cc", "cl", "g", "charts",
               "splits", "seam/√A", "pack", "D_area", "inv", "deg", "ovl", "unc", "seconds", "tbc", "stretch");
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -45,8 +45,8 @@ int main(int argc, char** argv)
     const SMP::Discrete_lie_flow_atlas_report r = SMP::discrete_lie_flow_atlas(mesh, uv, opt);
     std::string name = a.substr(a.find_last_of('/') + 1);
     if(r.code != SMP::OK) { std::printf("%-28s error: %s\n", name.c_str(), r.message.c_str()); continue; }
-    std::printf("%-28s %7zu %4zu %4zu %6zu %6zu %7.3f %6.3f %8.4f %4zu %4zu %4zu %4zu %8.2f %4zu %7.2f\n", name.c_str(),
-                std::size_t(num_faces(mesh)), r.components, r.max_genus, r.charts, r.splits,
+    std::printf("%-28s %7zu %4zu %4zu %4zu %6zu %6zu %7.3f %6.3f %8.4f %4zu %4zu %4zu %4zu %8.2f %4zu %7.2f\n", name.c_str(),
+                std::size_t(num_faces(mesh)), r.components, r.closed_components, r.max_genus, r.charts, r.splits,
                 r.seam_length / std::sqrt(r.surface_area), r.packing_efficiency, r.metrics.d_area, r.inverted_faces,
                 r.degenerate_faces, r.overlapping_chart_pairs, r.unconverged_charts, r.seconds, r.three_border_corner_faces, r.max_chart_stretch);
     std::fflush(stdout);
