@@ -37,7 +37,7 @@ int main(int argc, char** argv)
   Surface_mesh::Property_map<halfedge_descriptor, Kernel::Point_2> uvmap =
     sm.add_property_map<halfedge_descriptor, Kernel::Point_2>("h:uv").first;
 
-  // Defaults: square charts, seams through 4 tips and the handles, a
+  // Defaults: square charts, seams through 2 tips and the handles, a
   // gutter of 1/1024; Discrete_lie_flow_atlas_options changes them.
   const SMP::Discrete_lie_flow_atlas_report report = SMP::discrete_lie_flow_atlas(sm, uvmap);
   if(report.code != SMP::OK) {

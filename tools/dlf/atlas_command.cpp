@@ -52,7 +52,7 @@ const char* atlas_help =
   "  -o, --output OUT.obj   the atlas: the file's v lines in order, vt per chart vertex, f v/vt\n"
   "  --report R.json        the report (charts, seam length, packing, D_area, repairs, checks)\n"
   "  --border square|circle the charts' border (default square: fills its cell)\n"
-  "  --tips K               tips a closed component's seam runs through (default 4)\n"
+  "  --tips K               tips a closed component's seam runs through (default 2)\n"
   "  --gutter G             space around each chart, uv units (default 1/1024)\n"
   "  --no-stretch           keep the charts' shapes (shelf packing) instead of\n"
   "                         filling treemap cells by area-preserving stretches\n"
