@@ -871,6 +871,45 @@ PY
 fi
 check "no temporaries left (volume)" no_temporaries
 
+# --- atlas ----------------------------------------------------------------------
+# A closed genus-1 mesh: a valid atlas (exact checks), per-corner vt, the
+# file's v lines in order.
+"$DLF" atlas "$MESHES/knot1.off" -o knot_atlas.obj --report knot_atlas.json --quiet > atlas.out 2> atlas.err
+check "atlas knot1 exits 0" equals "$?" 0
+check "atlas knot1: no stderr with --quiet" equals "$(wc -c < atlas.err)" 0
+check "atlas knot1 report: valid" equals "$(json_get knot_atlas.json "" valid)" true
+check "atlas knot1 report: converged" equals "$(json_get knot_atlas.json "" converged)" true
+check "atlas knot1 report: 0 inverted faces" equals "$(json_get knot_atlas.json "" inverted_faces)" 0
+check "atlas knot1 report: 0 overlapping charts" equals "$(json_get knot_atlas.json "" overlapping_chart_pairs)" 0
+check "atlas knot1 report: genus 1" equals "$(json_get knot_atlas.json "" max_genus)" 1
+check "atlas knot1 report: D_area <= 2.02" number_is "$(json_get knot_atlas.json "" d_area)" "<=" 2.02
+check "atlas knot1 OBJ: the file's v lines, in order" equals \
+  "$(awk '/^v / { printf "%.12g %.12g %.12g\n", $2, $3, $4 }' knot_atlas.obj | md5sum)" \
+  "$(awk '!/^#/ && NF' "$MESHES/knot1.off" | awk 'NR == 2 { n = $1 } NR > 2 && NR <= 2 + n { printf "%.12g %.12g %.12g\n", $1, $2, $3 }' | md5sum)"
+check "atlas knot1 OBJ: 6400 faces f v/vt" equals "$(grep -c '^f [0-9]*/[0-9]* [0-9]*/[0-9]* [0-9]*/[0-9]*$' knot_atlas.obj)" 6400
+check "atlas knot1 OBJ: vt in the unit square" awk '/^vt / { if($2 < 0 || $2 > 1 || $3 < 0 || $3 > 1) bad = 1 } END { exit bad }' knot_atlas.obj
+# Polygons: triangulated, said on stderr and in the report.
+"$DLF" atlas "$MESHES/double-torus-example.off" -o dt.obj --report dt.json > dt.out 2> dt.err
+check "atlas on polygons exits 0" equals "$?" 0
+check "atlas on polygons: one stderr line says so" grep -q "polygons triangulated" dt.err
+check "atlas on polygons: report field" number_is "$(json_get dt.json repairs polygons_triangulated)" ">" 0
+# Several components: each handled.
+"$DLF" atlas "$MESHES/blobby_3cc.off" -o b3.obj --report b3.json --quiet
+check "atlas blobby_3cc exits 0" equals "$?" 0
+check "atlas blobby_3cc: 3 components" equals "$(json_get b3.json "" components)" 3
+# Bad input: one line, exit 1, no output file.
+: > empty.off
+printf 'OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n' > cloud.off
+printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n2 0 0\n3 0 0\n3 0 1 2\n3 0 2 3\n' > flat.off
+for bad in empty cloud flat; do
+  "$DLF" atlas "$bad.off" -o "$bad.obj" > "$bad.out" 2> "$bad.err"
+  check "atlas on $bad input exits 1" equals "$?" 1
+  check "atlas on $bad input: one stderr line" equals "$(wc -l < "$bad.err")" 1
+  check "atlas on $bad input: no output file" test ! -e "$bad.obj"
+done
+check "atlas on a point cloud says so" grep -q "point cloud" cloud.err
+check "atlas on all-degenerate faces says so" grep -q "all 2 faces are degenerate" flat.err
+
 echo
 if [ "$failures" -ne 0 ]; then
   echo "$failures of $checks checks FAILED"

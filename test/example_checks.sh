@@ -73,6 +73,28 @@ measure_controlled)
     python3 -c 'import sys, xml.etree.ElementTree as ET; ET.parse(sys.argv[1])' "$svg" || fail "$svg is not well-formed"
   done
   ;;
+atlas)
+  # "MESH: F faces, genus G, C charts, seam S, packing P, D_area D, I inverted, O overlapping, converged"
+  out=$("$EXE" "$MESHES/elephant.off") || fail "exit $?"
+  echo "$out"
+  echo "$out" | awk '
+    / charts, / {
+      seen = 1
+      for(i = 1; i <= NF; ++i) {
+        if($i == "genus") g = $(i + 1); if($i == "D_area") d = $(i + 1); if($i == "inverted,") inv = $(i - 1)
+        if($i == "overlapping,") ovl = $(i - 1); if($i == "packing") p = $(i + 1)
+      }
+      sub(/,$/, "", g); sub(/,$/, "", d); sub(/,$/, "", p); last = $NF
+    }
+    END {
+      if(!seen) { print "no result line"; exit 1 }
+      if(g != "3") { print "genus " g ", expected 3"; exit 1 }
+      if(!(d + 0 >= 2 && d + 0 <= 2.02)) { print "D_area " d " not in [2, 2.02]"; exit 1 }
+      if(inv != "0" || ovl != "0") { print inv " inverted, " ovl " overlapping"; exit 1 }
+      if(!(p + 0 > 0.5)) { print "packing " p; exit 1 }
+      if(last != "converged") { print "ended " last; exit 1 }
+    }' || fail "output"
+  ;;
 *)
   fail "no check for example '$NAME' (add one here)"
   ;;

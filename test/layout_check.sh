@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The internal layout (doc/architecture.md): no header directly in
 # internal/discrete_lie_flow/, at most 16 headers per folder, the wings
-# (disk/, sphere/, volume/) include only core/, flow/ and their own folder,
+# (disk/, sphere/, volume/, atlas/) include only core/, flow/ and their own folder,
 # core/ includes only core/, flow/ only core/ and flow/, and nothing under
 # internal/ includes a public parameterizer header (*_3.h); doc/architecture.md
 # names every internal header.
@@ -21,14 +21,14 @@ allowed() {  # folder -> the folders it may include
   case "$1" in
     core) echo "core" ;;
     flow) echo "core flow" ;;
-    disk|sphere|volume) echo "core flow $1" ;;
+    disk|sphere|volume|atlas) echo "core flow $1" ;;
     *) echo "" ;;
   esac
 }
 for h in "$dir"/*/*.h; do
   folder=$(basename "$(dirname "$h")")
   ok=$(allowed "$folder")
-  [[ -n "$ok" ]] || bad "unknown folder $folder/ (known: core flow disk sphere volume)"
+  [[ -n "$ok" ]] || bad "unknown folder $folder/ (known: core flow disk sphere volume atlas)"
   while IFS= read -r inc; do
     target=${inc#*discrete_lie_flow/}
     tf=${target%%/*}

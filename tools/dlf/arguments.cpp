@@ -185,6 +185,7 @@ void print_main_help(std::ostream& out)
          "\n"
          "Usage:\n"
          "  dlf disk INPUT [options]        map a disk-topology triangle mesh onto the plane\n"
+         "  dlf atlas MESH -o OUT.obj       any mesh (components, genus, polygons) to an area-preserving atlas\n"
          "  dlf score [MESH] PARAM.obj      measure the distortion of an existing map\n"
          "  dlf sphere INPUT [options]      map a closed genus-0 mesh onto the unit sphere\n"
          "  dlf volume MESH.mesh [options]  map a tetrahedral mesh of a ball into the unit ball\n"

@@ -13,6 +13,7 @@
 namespace dlf_cli {
 
 int disk_command(const std::vector<std::string>& args);
+int atlas_command(const std::vector<std::string>& args);
 int score_command(const std::vector<std::string>& args);
 int sphere_command(const std::vector<std::string>& args);
 int info_command(const std::vector<std::string>& args);

@@ -22,6 +22,7 @@ int main(int argc, char** argv)
   const std::string command = argc > 1 ? argv[1] : "";
   try {
     if(command == "disk") return disk_command(args);
+    if(command == "atlas") return atlas_command(args);
     if(command == "score") return score_command(args);
     if(command == "sphere") return sphere_command(args);
     if(command == "info") return info_command(args);
@@ -31,8 +32,8 @@ int main(int argc, char** argv)
       print_main_help(std::cout);
       return EXIT_OK;
     }
-    if(command.empty()) throw Cli_error("missing command: disk, sphere, volume, tetrahedralize, score or info (see 'dlf --help')");
-    throw Cli_error("unknown command '" + command + "': expected disk, sphere, volume, tetrahedralize, score or info (see 'dlf --help')");
+    if(command.empty()) throw Cli_error("missing command: disk, atlas, sphere, volume, tetrahedralize, score or info (see 'dlf --help')");
+    throw Cli_error("unknown command '" + command + "': expected disk, atlas, sphere, volume, tetrahedralize, score or info (see 'dlf --help')");
   } catch(const Cli_error& e) {
     std::cerr << "dlf: error: " << e.what() << std::endl;
     return e.code();

@@ -1,0 +1,355 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_ATLAS_3_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_DISCRETE_LIE_FLOW_ATLAS_3_H
+
+#include <CGAL/license/Surface_mesh_parameterization.h>
+
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_atlas_options.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/atlas/atlas_charts.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/atlas/atlas_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/atlas/atlas_packing.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/certification.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/distortion.h>
+#include <CGAL/Surface_mesh_parameterization/square_border_corners.h>
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/Square_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Symmetric_barycentric_mapping_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/internal/kernel_traits.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace dlf {
+
+typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Atlas_chart_mesh;
+
+/// The square border with the corners of `choose_square_border_corners()`
+/// (ears become corners, so no triangle has its three corners on one side).
+class Atlas_square_border
+{
+public:
+  template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>
+  Error_code parameterize(Atlas_chart_mesh& mesh, boost::graph_traits<Atlas_chart_mesh>::halfedge_descriptor bhd,
+                          VertexUVmap uvmap, VertexIndexMap vimap, VertexParameterizedMap vpmap)
+  {
+    const auto corners = choose_square_border_corners(mesh, bhd);
+    if(!corners) return ERROR_BORDER_TOO_SHORT;
+    Square_border_arc_length_parameterizer_3<Atlas_chart_mesh> square((*corners)[0], (*corners)[1], (*corners)[2],
+                                                                       (*corners)[3]);
+    return square.parameterize(mesh, bhd, uvmap, vimap, vpmap);
+  }
+  bool is_border_convex() const { return true; }
+};
+
+/// Flattens one chart with the certified disk flow: its outer loop (the
+/// longest) on a square (when `choose_square_border_corners()` finds
+/// corners) or a circle, its holes floating. `uv` gets one point per vertex
+/// of `piece`, every triangle positive.
+inline void flatten_atlas_chart(const Atlas_piece& piece, const Discrete_lie_flow_atlas_options& opt,
+                                std::vector<Vec2>& uv, Discrete_lie_flow_atlas_chart& chart)
+{
+  typedef boost::graph_traits<Atlas_chart_mesh>::halfedge_descriptor halfedge_descriptor;
+  typedef Atlas_chart_mesh::Vertex_index Vertex_index;
+  Atlas_chart_mesh mesh;
+  for(const Vec3& p : piece.xyz) mesh.add_vertex(Atlas_chart_mesh::Point(p[0], p[1], p[2]));
+  for(const Face& t : piece.faces)
+    if(mesh.add_face(Vertex_index(t[0]), Vertex_index(t[1]), Vertex_index(t[2])) == Atlas_chart_mesh::null_face()) {
+      chart.code = ERROR_NO_TOPOLOGICAL_DISC;
+      chart.message = "the chart is not a manifold surface";
+      return;
+    }
+  halfedge_descriptor bhd;
+  double longest = -1;
+  auto visited = mesh.add_property_map<halfedge_descriptor, bool>("h:atlas_visited", false).first;
+  for(halfedge_descriptor h : halfedges(mesh)) {
+    if(!is_border(h, mesh) || visited[h]) continue;
+    double length = 0;
+    for(halfedge_descriptor b : halfedges_around_face(h, mesh)) {
+      visited[b] = true;
+      length += norm3(sub(piece.xyz[source(b, mesh)], piece.xyz[target(b, mesh)]));
+    }
+    if(length > longest) { longest = length; bhd = h; }
+  }
+  Discrete_lie_flow_options flow = opt.flow;
+  flow.face_density = piece.density;
+  auto uvmap = mesh.add_property_map<Vertex_index, CGAL::Simple_cartesian<double>::Point_2>("v:atlas_uv").first;
+  auto run = [&](auto& parameterizer) {
+    const Error_code code = parameterize(mesh, parameterizer, bhd, uvmap);
+    const Discrete_lie_flow_report& r = parameterizer.report();
+    chart.code = code;
+    chart.stop_reason = r.stop_reason;
+    chart.iterations = r.iterations;
+    chart.d_area = r.final_d_area;
+    chart.message = r.message;
+  };
+  // The square, where it has corners and Tutte's map on it is fold-free
+  // (three corners on one side flatten a triangle); else the circle.
+  bool square = opt.border == Discrete_lie_flow_border::SQUARE && choose_square_border_corners(mesh, bhd);
+  if(square) {
+    flow.disk.border = Discrete_lie_flow_border::SQUARE;
+    typedef Symmetric_barycentric_mapping_parameterizer_3<Atlas_chart_mesh, Atlas_square_border> Square_tutte;
+    Discrete_lie_flow_parameterizer_3<Atlas_chart_mesh, Square_tutte> parameterizer(Square_tutte(), flow);
+    run(parameterizer);
+    square = chart.code == OK;
+  }
+  if(!square) {
+    flow.disk.border = Discrete_lie_flow_border::CIRCLE;
+    typedef Discrete_lie_flow_parameterizer_3<Atlas_chart_mesh> Circle_flow;
+    Circle_flow parameterizer(Circle_flow::Initial_parameterizer(), flow);
+    run(parameterizer);
+  }
+  if(chart.code != OK) return;
+  uv.resize(piece.xyz.size());
+  for(Vertex_index v : vertices(mesh)) uv[v] = {{ uvmap[v].x(), uvmap[v].y() }};
+}
+
+/// Turns a flattened chart counter-clockwise (mirrored if it came clockwise,
+/// exact) and scales it so that its uv area is its surface area `area`.
+inline void normalize_chart(const Atlas_piece& piece, std::vector<Vec2>& uv, double area)
+{
+  double signed_area = 0;
+  for(const Face& t : piece.faces)
+    signed_area += signed_area_2(uv[std::size_t(t[0])], uv[std::size_t(t[1])], uv[std::size_t(t[2])]);
+  const double s = std::sqrt(area / std::abs(signed_area));
+  for(Vec2& p : uv) p = {{ (signed_area < 0 ? -p[0] : p[0]) * s, p[1] * s }};
+}
+
+} // namespace dlf
+} // namespace internal
+
+/// \ingroup PkgDiscreteLieFlowParameterizers
+///
+/// Maps any triangle mesh to an area-preserving atlas in the unit square:
+/// every triangle gets uv coordinates, charts do not overlap, and every
+/// triangle's uv area is its share of the whole surface's (density-weighted)
+/// area times one common scale (`report.scale`), fold-free by CGAL's exact
+/// orientation predicate.
+///
+/// Every connected component is handled (isolated vertices are ignored and
+/// counted); non-manifold vertices are split, one copy per wedge. A
+/// component that is a disk, or genus 0 with holes (the holes float), is one
+/// chart; a closed genus-0 component is cut along a tree of shortest paths
+/// through `options.tips` tips; a component of genus g > 0 along a
+/// tree–cotree cut graph (through its holes, if any), pruned and shortened so
+/// that the seam turns around no triangle. Each chart is flattened with the
+/// certified flow of `Discrete_lie_flow_parameterizer_3` (square border by
+/// default), scaled to its share of the area; a chart whose flow does not
+/// converge is split in two geodesic halves, each flattened again (at most
+/// `options.max_split_depth` times). The charts are packed into the unit
+/// square with `options.gutter` around each: by default each fills a cell of
+/// a squarified treemap, stretched to the cell's shape by an area-preserving
+/// affine map (u, v) → (a·u, v/a), which changes no area ratio
+/// (`report.max_chart_stretch` is the largest a or 1/a); with
+/// `options.stretch_to_fill` false, the charts keep their shape on shelves.
+/// The result is checked exactly (`report.valid()`).
+///
+/// The uv map is per corner, as CGAL's `Seam_mesh` users expect: for every
+/// halfedge `h` with a face, `get(uvmap, h)` is the uv of `target(h, mesh)`
+/// as a corner of `face(h, mesh)`. Border halfedges are not written.
+///
+/// \tparam TriangleMesh a model of `FaceGraph` whose points have a kernel
+///   with `Point_2` (e.g. `Surface_mesh<Point_3>`)
+/// \tparam HalfedgeUVMap a model of `WritablePropertyMap` with
+///   `halfedge_descriptor` as key and the kernel's `Point_2` as value
+///
+/// \param mesh the input; its faces must be triangles of positive area
+/// \param uvmap receives the uv of every corner
+/// \param options the settings, see `Discrete_lie_flow_atlas_options`
+///
+/// \returns the report: `code` is `OK` when an atlas was written;
+/// `ERROR_EMPTY_MESH` without faces, `ERROR_NON_TRIANGULAR_MESH`,
+/// `ERROR_DEGENERATE_INPUT` (a zero-area face or a non-finite coordinate,
+/// named in `message`), `ERROR_INVALID_DENSITY`, `ERROR_WRONG_PARAMETER`
+/// (a non-certified mode, a negative gutter) otherwise, and the uv map is
+/// then untouched. `converged()` tells whether every chart's flow converged,
+/// `valid()` whether the exact checks passed.
+template <class TriangleMesh, class HalfedgeUVMap>
+Discrete_lie_flow_atlas_report discrete_lie_flow_atlas(const TriangleMesh& mesh, HalfedgeUVMap uvmap,
+                                                       const Discrete_lie_flow_atlas_options& options =
+                                                         Discrete_lie_flow_atlas_options())
+{
+  namespace D = internal::dlf;
+  typedef std::chrono::steady_clock Clock;
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  typedef typename internal::Kernel_traits<TriangleMesh>::Kernel Kernel;
+  typedef typename Kernel::Point_2 Point_2;
+  const Clock::time_point start = Clock::now();
+  Discrete_lie_flow_atlas_report R;
+  auto fail = [&R, start](Error_code code, const std::string& message) {
+    R.code = code;
+    R.message = message;
+    R.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return R;
+  };
+  if(options.flow.mode != Discrete_lie_flow_mode::CERTIFIED)
+    return fail(ERROR_WRONG_PARAMETER, "the atlas runs the certified flow only (options.flow.mode)");
+  if(!(options.gutter >= 0 && options.gutter < 1))
+    return fail(ERROR_WRONG_PARAMETER, "the gutter must be in [0, 1), not " + std::to_string(options.gutter));
+
+  // The mesh in index form, faces in the order of faces(mesh).
+  D::Atlas_piece all;
+  auto index = get(CGAL::dynamic_vertex_property_t<int>(), mesh);
+  const typename internal::Kernel_traits<TriangleMesh>::PPM ppmap = get(vertex_point, mesh);
+  for(vertex_descriptor v : vertices(mesh)) {
+    const auto& p = get(ppmap, v);
+    put(index, v, int(all.xyz.size()));
+    all.xyz.push_back({{ CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) }});
+    const D::Vec3& q = all.xyz.back();
+    if(!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
+      return fail(Error_code(ERROR_DEGENERATE_INPUT), "vertex " + std::to_string(all.xyz.size() - 1) + " has a non-finite coordinate");
+  }
+  std::vector<halfedge_descriptor> corner_halfedge; // 3f + k → the halfedge whose target is corner k
+  std::vector<char> used(all.xyz.size(), 0);
+  std::size_t degenerate = 0, first_degenerate = 0;
+  for(face_descriptor f : faces(mesh)) {
+    D::Face t;
+    std::size_t k = 0;
+    for(halfedge_descriptor h : halfedges_around_face(next(halfedge(f, mesh), mesh), mesh)) {
+      if(k < 3) { t[k] = get(index, target(h, mesh)); corner_halfedge.push_back(h); }
+      ++k;
+    }
+    if(k != 3)
+      return fail(ERROR_NON_TRIANGULAR_MESH, "face " + std::to_string(all.faces.size()) + " has " + std::to_string(k) +
+                  " vertices; triangulate the mesh first");
+    const std::size_t fi = all.faces.size();
+    if(!(D::triangle_area_3(all.xyz[std::size_t(t[0])], all.xyz[std::size_t(t[1])], all.xyz[std::size_t(t[2])]) > 0))
+      if(degenerate++ == 0) first_degenerate = fi;
+    for(int v : t) used[std::size_t(v)] = 1;
+    all.faces.push_back(t);
+    all.caller_face.push_back(fi);
+  }
+  if(all.faces.empty())
+    return fail(ERROR_EMPTY_MESH, "the mesh has no faces (" + std::to_string(all.xyz.size()) + " vertices)");
+  if(degenerate == all.faces.size())
+    return fail(Error_code(ERROR_DEGENERATE_INPUT), "all " + std::to_string(degenerate) + " faces have zero area");
+  if(degenerate > 0) {
+    const D::Face& t = all.faces[first_degenerate];
+    return fail(Error_code(ERROR_DEGENERATE_INPUT), std::to_string(degenerate) + " faces have zero area; first: face " +
+                std::to_string(first_degenerate) + " (vertices " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " +
+                std::to_string(t[2]) + ")");
+  }
+  if(!options.flow.face_density.empty()) {
+    if(options.flow.face_density.size() != all.faces.size())
+      return fail(Error_code(ERROR_INVALID_DENSITY), "the density has " + std::to_string(options.flow.face_density.size()) +
+                  " values for " + std::to_string(all.faces.size()) + " faces");
+    for(std::size_t f = 0; f < all.faces.size(); ++f)
+      if(!(options.flow.face_density[f] > 0) || !std::isfinite(options.flow.face_density[f]))
+        return fail(Error_code(ERROR_INVALID_DENSITY), "the density of face " + std::to_string(f) + " is " +
+                    std::to_string(options.flow.face_density[f]));
+    all.density = options.flow.face_density;
+  }
+  for(char u : used) R.isolated_vertices += u ? 0 : 1;
+  const std::vector<D::Face> caller_faces = all.faces;
+  const std::vector<long> caller_twin = D::halfedge_twins(caller_faces);
+
+  // Components → charts, each flattened and scaled to its share.
+  const Clock::time_point t0 = Clock::now();
+  std::vector<D::Atlas_piece> components = D::split_components(all);
+  R.components = components.size();
+  if(options.progress) options.progress(std::to_string(R.components) + " component(s), " + std::to_string(all.faces.size()) + " faces");
+  std::vector<D::Atlas_chart> charts;
+  const Error_code code = D::make_atlas_charts(std::move(components), options,
+    [&options](const D::Atlas_piece& p, std::vector<D::Vec2>& uv, Discrete_lie_flow_atlas_chart& c) {
+      D::flatten_atlas_chart(p, options, uv, c);
+    }, charts, R);
+  if(code != OK) return fail(code, R.message);
+  (void)t0;
+
+  const Clock::time_point t1 = Clock::now();
+  double total = 0;
+  std::vector<double> chart_area(charts.size());
+  for(std::size_t c = 0; c < charts.size(); ++c) total += (chart_area[c] = D::piece_area(charts[c].piece));
+  std::vector<std::vector<D::Vec2> > uv(charts.size());
+  for(std::size_t c = 0; c < charts.size(); ++c) {
+    D::normalize_chart(charts[c].piece, charts[c].uv, chart_area[c] / total);
+    uv[c].swap(charts[c].uv);
+  }
+  double stretch = 1;
+  bool filled = options.stretch_to_fill;
+  const std::vector<std::vector<D::Vec2> > unplaced = uv;
+  double s = filled ? D::fill_charts(uv, options.gutter, stretch) : 0.;
+  if(!(s > 0)) { // no room for the gutter in some cell: shelves
+    uv = unplaced;
+    filled = false;
+    stretch = 1;
+    s = D::pack_charts(uv, options.gutter);
+  }
+  if(!(s > 0))
+    return fail(ERROR_WRONG_PARAMETER, "the " + std::to_string(charts.size()) + " charts do not fit in the unit square with a gutter of " +
+                std::to_string(options.gutter));
+  R.scale = (filled ? s : s * s) / total;
+  R.max_chart_stretch = stretch;
+
+  // Per corner: the uv, and the chart vertex (for the seam).
+  std::vector<D::Vec2> corner_uv(3 * caller_faces.size());
+  std::vector<std::size_t> corner_vertex(3 * caller_faces.size());
+  std::size_t offset = 0;
+  for(std::size_t c = 0; c < charts.size(); ++c) {
+    const D::Atlas_piece& P = charts[c].piece;
+    for(std::size_t f = 0; f < P.faces.size(); ++f)
+      for(std::size_t k = 0; k < 3; ++k) {
+        const std::size_t corner = 3 * P.caller_face[f] + k;
+        corner_uv[corner] = uv[c][std::size_t(P.faces[f][k])];
+        corner_vertex[corner] = offset + std::size_t(P.faces[f][k]);
+      }
+    offset += P.xyz.size();
+    charts[c].report.area_share = chart_area[c] / total;
+    R.three_border_corner_faces += charts[c].report.three_border_corner_faces;
+    if(charts[c].report.stop_reason != Discrete_lie_flow_stop_reason::CONVERGED) ++R.unconverged_charts;
+    R.chart_reports.push_back(charts[c].report);
+  }
+  R.charts = charts.size();
+  for(std::size_t h = 0; h < caller_twin.size(); ++h) {
+    const long o = caller_twin[h];
+    if(o < 0 || std::size_t(o) < h) continue;
+    if(corner_vertex[h] != corner_vertex[D::next_in_face(std::size_t(o))] ||
+       corner_vertex[D::next_in_face(h)] != corner_vertex[std::size_t(o)])
+      R.seam_length += D::norm3(D::sub(all.xyz[std::size_t(caller_faces[h / 3][h % 3])],
+                                       all.xyz[std::size_t(caller_faces[h / 3][(h % 3 + 1) % 3])]));
+  }
+
+  // The exact checks and the whole atlas's distortion, on corners.
+  std::vector<D::Vec3> corner_xyz(corner_uv.size());
+  std::vector<D::Face> corner_faces(caller_faces.size());
+  for(std::size_t f = 0; f < caller_faces.size(); ++f) {
+    corner_faces[f] = {{ int(3 * f), int(3 * f + 1), int(3 * f + 2) }};
+    for(std::size_t k = 0; k < 3; ++k) corner_xyz[3 * f + k] = all.xyz[std::size_t(caller_faces[f][k])];
+  }
+  const D::Orientation_count oc = D::count_orientations_2(corner_uv, corner_faces);
+  R.inverted_faces = oc.inverted;
+  R.degenerate_faces = oc.degenerate;
+  R.overlapping_chart_pairs = D::overlapping_chart_pairs(uv, R.points_outside);
+  R.metrics = D::planar_distortion(corner_xyz, corner_uv, corner_faces, all.density);
+  double uv_area = 0, area = 0;
+  for(std::size_t f = 0; f < caller_faces.size(); ++f) {
+    uv_area += D::signed_area_2(corner_uv[3 * f], corner_uv[3 * f + 1], corner_uv[3 * f + 2]);
+    area += D::triangle_area_3(corner_xyz[3 * f], corner_xyz[3 * f + 1], corner_xyz[3 * f + 2]);
+  }
+  R.packing_efficiency = uv_area;
+  R.surface_area = area;
+  for(std::size_t corner = 0; corner < corner_uv.size(); ++corner)
+    put(uvmap, corner_halfedge[corner], Point_2(corner_uv[corner][0], corner_uv[corner][1]));
+  R.seconds_pack = std::chrono::duration<double>(Clock::now() - t1).count();
+  R.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  R.message = "Success";
+  return R;
+}
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

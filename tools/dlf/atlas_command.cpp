@@ -1,0 +1,295 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// `dlf atlas MESH -o OUT.obj`: any triangle or polygon mesh to a certified
+// area-preserving atlas in the unit square (discrete_lie_flow_atlas()).
+// Input hygiene with CGAL's Polygon_mesh_processing, said aloud: polygons
+// triangulated, non-manifold vertices duplicated (appended after the
+// file's vertices), degenerate faces dropped (they cannot have a positive
+// uv area), isolated vertices kept and counted; one stderr line and one
+// report field each. The OBJ keeps the file's `v` lines in order; `vt` one
+// per chart vertex, faces `f v/vt`.
+
+#include "cli_error.h"
+#include "commands.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_atlas_3.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace dlf_cli {
+
+namespace {
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+typedef CGAL::Simple_cartesian<double> Atlas_kernel;
+typedef CGAL::Surface_mesh<Atlas_kernel::Point_3> Atlas_mesh;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel EK;
+
+const char* atlas_help =
+  "Usage: dlf atlas MESH -o OUT.obj [options]\n"
+  "  Any triangle or polygon mesh (every component, any genus, holes) to an atlas\n"
+  "  in the unit square: charts cut and flattened by the certified flow, every\n"
+  "  triangle's uv area its share of the surface, no fold, no overlap.\n"
+  "Options:\n"
+  "  -o, --output OUT.obj   the atlas: the file's v lines in order, vt per chart vertex, f v/vt\n"
+  "  --report R.json        the report (charts, seam length, packing, D_area, repairs, checks)\n"
+  "  --border square|circle the charts' border (default square: fills its cell)\n"
+  "  --tips K               tips a closed component's seam runs through (default 2)\n"
+  "  --gutter G             space around each chart, uv units (default 1/1024)\n"
+  "  --no-stretch           keep the charts' shapes (shelf packing) instead of\n"
+  "                         filling treemap cells by area-preserving stretches\n"
+  "  --quiet                no progress lines\n"
+  "Exit: 0 valid atlas, every chart converged; 3 valid atlas, a chart stopped short;\n"
+  "      1 bad input (nothing written); 2 no atlas.\n";
+
+struct Atlas_args
+{
+  std::string input, output, report;
+  SMP::Discrete_lie_flow_atlas_options options;
+  bool quiet = false;
+};
+
+Atlas_args parse(const std::vector<std::string>& args)
+{
+  Atlas_args a;
+  auto value = [&](std::size_t& i) -> const std::string& {
+    if(i + 1 >= args.size()) throw Cli_error("atlas: " + args[i] + " needs a value (see 'dlf atlas --help')");
+    return args[++i];
+  };
+  auto number = [&](std::size_t& i) {
+    const std::string& s = value(i);
+    std::size_t end = 0;
+    double x = 0;
+    try { x = std::stod(s, &end); } catch(...) { end = 0; }
+    if(end != s.size() || !std::isfinite(x)) throw Cli_error("atlas: " + args[i - 1] + " wants a number, not '" + s + "'");
+    return x;
+  };
+  for(std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& s = args[i];
+    if(s == "-h" || s == "--help") { std::cout << atlas_help; std::exit(EXIT_OK); }
+    else if(s == "-o" || s == "--output") a.output = value(i);
+    else if(s == "--report") a.report = value(i);
+    else if(s == "--border") {
+      const std::string& b = value(i);
+      if(b != "square" && b != "circle") throw Cli_error("atlas: --border is square or circle, not '" + b + "'");
+      a.options.border = b == "square" ? SMP::Discrete_lie_flow_border::SQUARE : SMP::Discrete_lie_flow_border::CIRCLE;
+    }
+    else if(s == "--tips") {
+      const double k = number(i);
+      if(!(k >= 2 && k <= 1000 && k == std::floor(k))) throw Cli_error("atlas: --tips is a whole number from 2 to 1000");
+      a.options.tips = std::size_t(k);
+    }
+    else if(s == "--gutter") {
+      const double g = number(i);
+      if(!(g >= 0 && g < 0.5)) throw Cli_error("atlas: --gutter is in [0, 0.5)");
+      a.options.gutter = g;
+    }
+    else if(s == "--no-stretch") a.options.stretch_to_fill = false;
+    else if(s == "--quiet") a.quiet = true;
+    else if(!s.empty() && s[0] == '-') throw Cli_error("atlas: unknown option " + s + " (see 'dlf atlas --help')");
+    else if(a.input.empty()) a.input = s;
+    else throw Cli_error("atlas: one mesh only ('" + a.input + "', then '" + s + "')");
+  }
+  if(a.input.empty()) throw Cli_error("atlas: missing MESH (see 'dlf atlas --help')");
+  if(a.output.empty()) throw Cli_error("atlas: missing -o OUT.obj");
+  return a;
+}
+
+/// What the input needed.
+struct Repairs
+{
+  std::size_t polygons_triangulated = 0;
+  std::size_t nonmanifold_vertices_added = 0;
+  std::size_t degenerate_faces_dropped = 0;
+  std::size_t isolated_vertices = 0;
+};
+
+/// Reads MESH into a triangle mesh, repairing what Polygon_mesh_processing
+/// repairs and saying so; throws `Cli_error` for what cannot be an atlas.
+Atlas_mesh read_and_repair(const std::string& path, Repairs& rep, std::size_t& file_vertices, bool quiet)
+{
+  std::vector<Atlas_kernel::Point_3> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  {
+    std::ifstream probe(path);
+    if(!probe) throw Cli_error(path + ": cannot open");
+  }
+  if(!CGAL::IO::read_polygon_soup(path, points, polygons) && points.empty())
+    throw Cli_error(path + ": empty or unreadable mesh file");
+  file_vertices = points.size();
+  if(points.empty()) throw Cli_error(path + ": empty mesh (no vertices)");
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(!std::isfinite(points[i].x()) || !std::isfinite(points[i].y()) || !std::isfinite(points[i].z()))
+      throw Cli_error(path + ": vertex " + std::to_string(i) + " has a non-finite coordinate");
+  if(polygons.empty())
+    throw Cli_error(path + ": a point cloud (" + std::to_string(points.size()) + " vertices, no faces); an atlas needs faces");
+  auto say = [&](const std::string& line) { if(!quiet) std::cerr << "dlf: atlas: " << line << "\n"; };
+  // Polygons with a repeated or out-of-range corner, or fewer than 3, have no area.
+  std::vector<std::vector<std::size_t> > kept;
+  for(const auto& p : polygons) {
+    bool ok = p.size() >= 3;
+    for(std::size_t k = 0; ok && k < p.size(); ++k) ok = p[k] < points.size() && p[k] != p[(k + 1) % p.size()];
+    if(ok) kept.push_back(p); else ++rep.degenerate_faces_dropped;
+  }
+  // Triangles of zero area (exact), dropped now; polygons after triangulation.
+  auto zero_area = [&](const std::vector<std::size_t>& p) {
+    auto P = [&](std::size_t i) { return EK::Point_3(points[i].x(), points[i].y(), points[i].z()); };
+    return p.size() == 3 && CGAL::collinear(P(p[0]), P(p[1]), P(p[2]));
+  };
+  auto build = [&](std::vector<std::vector<std::size_t> >& soup) {
+    std::vector<std::vector<std::size_t> > good;
+    for(auto& p : soup)
+      if(zero_area(p)) ++rep.degenerate_faces_dropped; else good.push_back(p);
+    if(good.empty())
+      throw Cli_error(path + ": all " + std::to_string(polygons.size()) + " faces are degenerate (zero area)");
+    const std::size_t before = points.size();
+    CGAL::Polygon_mesh_processing::orient_polygon_soup(points, good);
+    rep.nonmanifold_vertices_added += points.size() - before;
+    Atlas_mesh mesh;
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, good, mesh);
+    return mesh;
+  };
+  Atlas_mesh mesh = build(kept);
+  for(auto f : faces(mesh))
+    if(degree(f, mesh) > 3) ++rep.polygons_triangulated;
+  if(rep.polygons_triangulated > 0) {
+    CGAL::Polygon_mesh_processing::triangulate_faces(mesh);
+    // Triangulation may make zero-area triangles: back to a soup, and again.
+    std::vector<std::vector<std::size_t> > tris;
+    for(auto f : faces(mesh)) {
+      std::vector<std::size_t> t;
+      for(auto v : vertices_around_face(halfedge(f, mesh), mesh)) t.push_back(std::size_t(v));
+      tris.push_back(t);
+    }
+    points.assign(mesh.points().begin(), mesh.points().end());
+    mesh = build(tris);
+  }
+  std::vector<char> used(num_vertices(mesh), 0);
+  for(auto f : faces(mesh))
+    for(auto v : vertices_around_face(halfedge(f, mesh), mesh)) used[std::size_t(v)] = 1;
+  for(char u : used) rep.isolated_vertices += u ? 0 : 1;
+  if(rep.polygons_triangulated) say(std::to_string(rep.polygons_triangulated) + " polygons triangulated");
+  if(rep.nonmanifold_vertices_added)
+    say(std::to_string(rep.nonmanifold_vertices_added) + " vertices added to make the mesh manifold (non-manifold vertices and edges split; appended after the file's vertices)");
+  if(rep.degenerate_faces_dropped)
+    say(std::to_string(rep.degenerate_faces_dropped) + " degenerate faces (zero area) dropped: they have no uv");
+  if(rep.isolated_vertices) say(std::to_string(rep.isolated_vertices) + " isolated vertices kept as v lines, ignored");
+  return mesh;
+}
+
+std::string shortest(double x)
+{
+  char buf[32];
+  for(int p = 6; p <= 17; ++p) {
+    std::snprintf(buf, sizeof buf, "%.*g", p, x);
+    if(std::strtod(buf, nullptr) == x) break;
+  }
+  return buf;
+}
+
+} // namespace
+
+int atlas_command(const std::vector<std::string>& args)
+{
+  Atlas_args a = parse(args);
+  Repairs rep;
+  std::size_t file_vertices = 0;
+  Atlas_mesh mesh = read_and_repair(a.input, rep, file_vertices, a.quiet);
+  if(!a.quiet) a.options.progress = [](const std::string& s) { std::cerr << "dlf: atlas: " << s << "\n"; };
+  auto uv = mesh.add_property_map<Atlas_mesh::Halfedge_index, Atlas_kernel::Point_2>("h:uv").first;
+  const SMP::Discrete_lie_flow_atlas_report r = SMP::discrete_lie_flow_atlas(mesh, uv, a.options);
+  if(r.code != SMP::OK) {
+    const Exit_code code = (r.code == SMP::ERROR_EMPTY_MESH || int(r.code) == int(SMP::ERROR_DEGENERATE_INPUT) ||
+                            r.code == SMP::ERROR_NON_TRIANGULAR_MESH) ? EXIT_BAD_INPUT : EXIT_FLOW_ERROR;
+    throw Cli_error(a.input + ": " + SMP::discrete_lie_flow_error_message(r.code) + ": " + r.message, code);
+  }
+  if(!r.valid()) throw Cli_error(a.input + ": the atlas failed its exact checks (nothing written)", EXIT_FLOW_ERROR);
+  // The OBJ: v in the mesh's vertex order (the file's, then added ones), one vt per (vertex, uv).
+  std::ostringstream obj;
+  obj << "# dlf atlas " << a.input << ": " << r.charts << " charts, packing efficiency " << r.packing_efficiency
+      << ", D_area " << r.metrics.d_area << "\n";
+  for(auto v : vertices(mesh)) {
+    const auto& p = mesh.point(v);
+    obj << "v " << shortest(p.x()) << ' ' << shortest(p.y()) << ' ' << shortest(p.z()) << "\n";
+  }
+  std::map<std::tuple<std::size_t, double, double>, std::size_t> vt;
+  std::ostringstream vts, fs;
+  for(auto f : faces(mesh)) {
+    fs << "f";
+    for(auto h : halfedges_around_face(halfedge(f, mesh), mesh)) {
+      const auto& q = uv[h];
+      auto ins = vt.emplace(std::make_tuple(std::size_t(target(h, mesh)), q.x(), q.y()), vt.size() + 1);
+      if(ins.second) vts << "vt " << shortest(q.x()) << ' ' << shortest(q.y()) << "\n";
+      fs << ' ' << std::size_t(target(h, mesh)) + 1 << '/' << ins.first->second;
+    }
+    fs << "\n";
+  }
+  obj << vts.str() << fs.str();
+  {
+    std::ofstream out(a.output);
+    if(!(out << obj.str())) throw Cli_error("atlas: cannot write " + a.output);
+  }
+  if(!a.report.empty()) {
+    nlohmann::json j;
+    j["input"] = a.input;
+    j["vertices_in_file"] = file_vertices;
+    j["faces"] = num_faces(mesh);
+    j["repairs"] = { { "polygons_triangulated", rep.polygons_triangulated },
+                     { "nonmanifold_vertices_added", rep.nonmanifold_vertices_added },
+                     { "degenerate_faces_dropped", rep.degenerate_faces_dropped },
+                     { "isolated_vertices", rep.isolated_vertices } };
+    j["components"] = r.components;
+    j["closed_components"] = r.closed_components;
+    j["max_genus"] = r.max_genus;
+    j["charts"] = r.charts;
+    j["splits"] = r.splits;
+    j["unconverged_charts"] = r.unconverged_charts;
+    j["converged"] = r.converged();
+    j["valid"] = r.valid();
+    j["seam_length"] = r.seam_length;
+    j["surface_area"] = r.surface_area;
+    j["packing_efficiency"] = r.packing_efficiency;
+    j["max_chart_stretch"] = r.max_chart_stretch;
+    j["d_area"] = r.metrics.d_area;
+    j["log_area_max_abs"] = r.metrics.log_area_max_abs;
+    j["inverted_faces"] = r.inverted_faces;
+    j["degenerate_faces"] = r.degenerate_faces;
+    j["overlapping_chart_pairs"] = r.overlapping_chart_pairs;
+    j["three_border_corner_faces"] = r.three_border_corner_faces;
+    j["seconds"] = r.seconds;
+    nlohmann::json charts = nlohmann::json::array();
+    for(const auto& c : r.chart_reports)
+      charts.push_back({ { "faces", c.faces }, { "holes", c.holes }, { "split_depth", c.split_depth },
+                         { "area_share", c.area_share }, { "iterations", c.iterations }, { "d_area", c.d_area },
+                         { "stop_reason", SMP::discrete_lie_flow_stop_reason_name(c.stop_reason) },
+                         { "three_border_corner_faces", c.three_border_corner_faces } });
+    j["chart_list"] = charts;
+    std::ofstream out(a.report);
+    if(!(out << j.dump(2) << "\n")) throw Cli_error("atlas: cannot write " + a.report);
+  }
+  if(!a.quiet)
+    std::cerr << "dlf: atlas: " << r.charts << " charts, seam " << r.seam_length << ", packing efficiency "
+              << r.packing_efficiency << ", D_area " << r.metrics.d_area << ", " << r.inverted_faces + r.degenerate_faces
+              << " inverted or degenerate, " << r.overlapping_chart_pairs << " overlapping charts, " << r.seconds << " s\n";
+  return r.converged() ? EXIT_OK : EXIT_NOT_CONVERGED;
+}
+
+} // namespace dlf_cli
