@@ -45,8 +45,11 @@ def disk(V, F, *, mode: str = "certified", border: Optional[str] = None, init: s
     """Maps a disk-topology mesh (or a disk with holes, which float) onto the
     plane, area-preserving; returns ``(uv, report)``.
 
-    uv: (n, 2) float64 array, the map of vertex i in row i, every triangle
-    positively oriented. report: the dict of ``dlf disk --report``.
+    uv: (n, 2) float64 array, the map of vertex i in row i; in the
+    certified mode (the default) every triangle positively oriented (exact
+    predicate); in the paper and literal modes only the flowing
+    triangulation is certified and ``report["caller_inverted_faces"]`` counts
+    the input's triangles it inverts. report: the dict of ``dlf disk --report``.
 
     mode: "certified" (never folds the input triangles), "paper" (the
     paper's flow with edge flips, stabilised; disks without holes only) or
@@ -91,8 +94,11 @@ def sphere(V, F, *, mode: str = "certified", density=None, tolerance: Optional[f
     """Maps a closed genus-0 mesh onto the unit sphere, area-preserving;
     returns ``(points, report)``.
 
-    points: (n, 3) float64 array on the unit sphere, every triangle
-    positively oriented (exact predicate). report: the dict of
+    points: (n, 3) float64 array on the unit sphere; in the certified mode
+    (the default) every triangle positively oriented (exact predicate); in
+    the paper and literal modes only the flowing triangulation is certified
+    and ``report["caller_inverted_faces"]`` counts the input's triangles it
+    inverts. report: the dict of
     ``dlf sphere --report``. Options as for :func:`disk`, plus
     log_area_tolerance (``--log-area-tolerance``), start ("tutte" or
     "conformal", ``--start``) and init_map (an (n, 3) array: the caller's
