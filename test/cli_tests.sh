@@ -814,6 +814,9 @@ check "volume -v: a line per flow iteration, as many as reported" equals \
 check "volume --cholesky-every 1: converged, one conjugate-gradient step per iteration (the factorisation is the matrix solved)" \
   equals "$(json_get vol_chol.json "" stop_reason) $(json_get vol_chol.json counters cg_iterations)" \
   "converged $(json_get vol_chol.json "" iterations)"
+"$DLF" volume vol_sphere.mesh --max-iterations 2 --report vol_cap.json -q 2> vol_cap.err
+check "volume stopped after 2 iterations: exit 3 and status not_converged, as disk and sphere" equals \
+  "$? $(json_get vol_cap.json "" status) $(json_get vol_cap.json "" stop_reason)" "3 not_converged iteration_cap"
 "$DLF" volume vol_sphere.mesh --mode paper -o vol_paper.mesh --report vol_paper.json -q
 check "volume --mode paper: status ok, 0 inverted tets, the mode reported, no conjugate gradients" equals \
   "$(json_get vol_paper.json "" status) $(json_get vol_paper.json final inverted_tets) $(json_get vol_paper.json options mode) $(json_get vol_paper.json counters cg_iterations)" \

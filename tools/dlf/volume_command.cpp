@@ -302,7 +302,8 @@ int volume_command(const std::vector<std::string>& args)
   if(!report_path.empty()) {
     json j;
     j["input"] = input;
-    j["status"] = R.status == SMP::OK ? "ok" : "error";
+    // As `dlf disk` and `dlf sphere`: a valid map short of its goal is "not_converged" (exit 3).
+    j["status"] = R.status != SMP::OK ? "error" : R.converged() ? "ok" : "not_converged";
     j["message"] = R.message;
     j["stop_reason"] = stop_name(R.stop_reason);
     j["vertices"] = R.vertices;
