@@ -117,15 +117,28 @@ ADDED_COLUMNS = (
 # ---------------------------------------------------------------------------
 
 
-def _limit_memory(nbytes: int):
+def _child_setup(nbytes: Optional[int]):
+    """What the child does before it execs: at most `nbytes` of address
+    space (if given), and SIGKILL when the thread that started it dies (its
+    worker: a worker that is stopped or killed takes its runs with it, even
+    though each run has a process group of its own; Linux only)."""
     # Imported here, in the parent: the child (forked from a threaded
     # worker) must not take the import lock before it execs.
+    import ctypes
     import resource
 
     setrlimit, which = resource.setrlimit, resource.RLIMIT_AS
+    try:
+        prctl = ctypes.CDLL(None, use_errno=True).prctl
+    except (OSError, AttributeError):
+        prctl = None
+    PR_SET_PDEATHSIG, kill = 1, int(signal.SIGKILL)
 
     def apply():  # in the child, before exec
-        setrlimit(which, (nbytes, nbytes))
+        if prctl is not None:
+            prctl(PR_SET_PDEATHSIG, kill, 0, 0, 0)
+        if nbytes:
+            setrlimit(which, (nbytes, nbytes))
 
     return apply
 
@@ -136,10 +149,10 @@ def _run_tool(argv: Sequence[str], timeout: float, cwd: Optional[str] = None,
     `memory_limit` GiB of address space); returns (exit code, signal,
     stderr, seconds, timed out). At the timeout the group is killed."""
     start = time.monotonic()
-    limit = _limit_memory(int(memory_limit * (1 << 30))) if memory_limit else None
+    setup = _child_setup(int(memory_limit * (1 << 30)) if memory_limit else None)
     with subprocess.Popen(
         list(argv), stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, start_new_session=True,
-        cwd=cwd, preexec_fn=limit
+        cwd=cwd, preexec_fn=setup
     ) as p:
         try:
             _, err = p.communicate(timeout=timeout)
@@ -377,15 +390,17 @@ def _read_json(path: str) -> Optional[dict]:
 
 def run_one(mesh_key: str, mesh_path: str, config_name: str, dlf: Optional[str], timeout: float,
             every_config: bool = False, runner: Optional[str] = None, check_outputs: bool = False,
-            memory_limit: Optional[float] = None) -> dict:
+            memory_limit: Optional[float] = None, scratch_root: Optional[str] = None) -> dict:
     """One row of ``runs``: `dlf info` decides whether the configuration
     applies (a mesh that fits neither command is given to both, whose
     refusal is the result; with `every_config`, every mesh is given to
     every configuration), then the configuration runs with a timeout, in a
-    scratch folder of its own. A runner's method runs on every mesh."""
+    scratch folder of its own (in `scratch_root`, the study's, where this
+    worker sees it). A runner's method runs on every mesh."""
     config = config_of(config_name, runner)
     row = {"mesh": mesh_key, "config": config_name, "worker": f"{socket.gethostname()}:{os.getpid()}"}
-    with tempfile.TemporaryDirectory(prefix="dlf-study-") as scratch:
+    where = scratch_root if scratch_root and os.path.isdir(scratch_root) else None
+    with tempfile.TemporaryDirectory(prefix="dlf-study-", dir=where) as scratch:
         if config.command == "runner":
             return _run_runner(row, runner, config, mesh_path, timeout, scratch, memory_limit)
         fits = _mesh_fits(dlf, mesh_path, timeout, scratch)
@@ -599,8 +614,6 @@ def find_dlf(given: Optional[str]) -> str:
 
 
 def run_study(args: argparse.Namespace) -> int:
-    from distributed import Client, LocalCluster, as_completed  # late: `report` needs no dask
-
     selected = parse_configs(args.config or list(DEFAULT_CONFIGS), args.runner)
     if not args.timeout > 0:
         raise SystemExit("dlf-study: error: --timeout must be > 0")
@@ -614,6 +627,62 @@ def run_study(args: argparse.Namespace) -> int:
     for c, under in selected.items():
         if under and not any(r[2] == c for r in runs):
             raise SystemExit(f"dlf-study: error: --config {c}@{'/'.join(under)}: no mesh under that folder")
+    lock = _lock_study(args.db)
+    try:
+        return _run_locked(args, client_factory(args), runs, dlf, runner, selected, meshes)
+    finally:
+        lock.close()
+
+
+def _lock_study(db_path: str):
+    """One driver per database: an exclusive lock on DB.lock, held while the
+    study runs (the kernel drops it when the driver dies, even by SIGKILL).
+    A second driver refuses with the first one's pid."""
+    import fcntl
+
+    f = open(db_path + ".lock", "a+")
+    try:
+        fcntl.flock(f, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:
+        f.seek(0)
+        pid = f.read().strip() or "?"
+        f.close()
+        raise SystemExit(f"dlf-study: error: another dlf-study (pid {pid}) is running on {db_path}; "
+                         "wait for it to finish, or give another --db")
+    f.seek(0)
+    f.truncate()
+    f.write(str(os.getpid()))
+    f.flush()
+    return f
+
+
+def client_factory(args: argparse.Namespace):
+    """A function that connects to the scheduler, or starts a local cluster,
+    and keeps the client and the cluster in `state` as soon as each exists
+    (so that an interrupt at any moment can close them). The local cluster's
+    processes start with SIGINT ignored (an ignored signal stays ignored
+    across exec): Ctrl-C reaches the whole foreground process group, and the
+    driver alone then stops the study, in order. The price: a Ctrl-C during
+    the cluster's start (about a second) is ignored by the driver too."""
+    def connect(state: dict) -> None:
+        from distributed import Client, LocalCluster
+
+        if args.scheduler:
+            state["client"] = Client(args.scheduler)
+            return
+        before = signal.signal(signal.SIGINT, signal.SIG_IGN)
+        try:
+            state["cluster"] = LocalCluster(n_workers=args.workers, threads_per_worker=1, processes=True,
+                                            dashboard_address=":0")
+        finally:
+            signal.signal(signal.SIGINT, before)
+        state["client"] = Client(state["cluster"])
+    return connect
+
+
+def _run_locked(args, connect, runs, dlf, runner, selected, meshes) -> int:
+    from distributed import as_completed
+
     db = open_db(args.db)
     done = done_keys(db)
     todo = [(key, path, c) for key, path, c in runs if (key, c) not in done]
@@ -624,23 +693,25 @@ def run_study(args: argparse.Namespace) -> int:
     log = (lambda *a: None) if args.quiet else (lambda *a: print(*a, file=sys.stderr, flush=True))
     log(f"dlf-study: {len(meshes)} meshes, {len(selected)} configurations: {total} runs; "
         f"{total - len(todo)} already in {args.db}, {len(todo)} to run")
+    # The runs' scratch folders, in one folder beside the database: removed
+    # when the study ends however it ends, and, left by a driver that was
+    # killed, when the next one starts.
+    scratch_root = os.path.abspath(args.db) + ".scratch"
+    shutil.rmtree(scratch_root, ignore_errors=True)
     if not todo:
+        db.close()
         return 0
-
-    cluster = None
-    if args.scheduler:
-        client = Client(args.scheduler)
-    else:
-        cluster = LocalCluster(n_workers=args.workers, threads_per_worker=1, processes=True,
-                               dashboard_address=":0")
-        client = Client(cluster)
+    os.makedirs(scratch_root)
+    state: Dict[str, object] = {}
     written = 0
     start = time.monotonic()
     futures = []
     try:
+        connect(state)
+        client = state["client"]
         futures = [
             client.submit(run_one, key, path, c, dlf, args.timeout, args.every_config, runner,
-                          args.check_outputs, args.memory_limit,
+                          args.check_outputs, args.memory_limit, scratch_root,
                           key=f"dlf-study-{c}-{key}-{args.db}",
                           pure=False, retries=args.retries)
             for key, path, c in todo
@@ -664,16 +735,36 @@ def run_study(args: argparse.Namespace) -> int:
             return 1
         return 0
     except KeyboardInterrupt:
+        _quiet_shutdown()
         log(f"\ndlf-study: interrupted; {written} runs written this time, {len(done_keys(db))} of {total} "
             f"in {args.db}; run the same command again to resume")
         return 130
     finally:
-        for f in futures:
-            f.release()
-        client.close()
-        if cluster is not None:
-            cluster.close()
-        db.close()
+        # A second Ctrl-C (or SIGTERM) during the shutdown would leave runs behind: ignored.
+        before = signal.signal(signal.SIGINT, signal.SIG_IGN)
+        before_term = signal.signal(signal.SIGTERM, signal.SIG_IGN)
+        try:
+            for f in futures:
+                f.release()
+            if "client" in state:
+                state["client"].close()
+            if "cluster" in state:
+                state["cluster"].close()  # the workers stop; their runs die with them
+            db.close()
+            shutil.rmtree(scratch_root, ignore_errors=True)
+        finally:
+            signal.signal(signal.SIGINT, before)
+            signal.signal(signal.SIGTERM, before_term)
+
+
+def _quiet_shutdown() -> None:
+    """No warnings from dask while an interrupted study stops its workers
+    (they are stopped on purpose)."""
+    import logging
+
+    for name in ("distributed", "distributed.nanny", "distributed.worker", "distributed.scheduler",
+                 "distributed.core", "distributed.client", "tornado"):
+        logging.getLogger(name).setLevel(logging.CRITICAL)
 
 
 # ---------------------------------------------------------------------------
@@ -850,12 +941,21 @@ def parser() -> argparse.ArgumentParser:
     return p
 
 
+def _interrupt(signum, frame):
+    raise KeyboardInterrupt
+
+
 def main(argv: Optional[Sequence[str]] = None) -> int:
     args = parser().parse_args(argv)
     if args.command == "run":
         if args.workers is not None and args.workers < 1:
             raise SystemExit("dlf-study: error: --workers must be >= 1")
-        return run_study(args)
+        signal.signal(signal.SIGTERM, _interrupt)  # SIGTERM stops a study as Ctrl-C does
+        try:
+            return run_study(args)
+        except KeyboardInterrupt:  # before the runs started: nothing to stop
+            print(f"\ndlf-study: interrupted before any run; run the same command again to start", file=sys.stderr)
+            return 130
     if args.command == "report":
         return report_study(args)
     for c in CONFIGS.values():

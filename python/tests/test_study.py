@@ -15,6 +15,7 @@ import signal
 import sqlite3
 import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
@@ -53,7 +54,7 @@ if [ "$1" != info ]; then
   sleep "${{FAKE_DELAY:-0}}"
   case "$2" in
     *crash.off) echo "about to crash" >&2; kill -SEGV $$ ;;
-    *hang.off) sleep 600 ;;
+    *hang.off) exec sleep 600 ;;
   esac
 fi
 exec "{DLF}" "$@"
@@ -195,6 +196,101 @@ def test_killed_worker_loses_no_run(corpus, tmp_path):
     victim.kill()
     _, err = p.communicate(timeout=300)
     assert p.returncode == 0, err
+    check_rows(rows_of(db))
+
+
+def runs_left(corpus_dir, wait=10.0):
+    """The processes still running a flow on the corpus (dlf, the fake, its
+    sleep), after up to `wait` seconds for them to go."""
+    deadline = time.time() + wait
+    while True:
+        left = []
+        for proc in psutil.process_iter(["cmdline"]):
+            try:
+                cmd = " ".join(proc.info["cmdline"] or [])
+            except (psutil.NoSuchProcess, psutil.AccessDenied):
+                continue
+            if str(corpus_dir) in cmd and "discrete_lie_flow.study" not in cmd:
+                left.append(cmd)
+        if not left or time.time() > deadline:
+            return left
+        time.sleep(0.2)
+
+
+def scratch_folders():
+    return set(Path(tempfile.gettempdir()).glob("dlf-study-*"))
+
+
+def test_interrupt_leaves_no_run_and_no_scratch(corpus, tmp_path):
+    # Ctrl-C reaches the whole foreground process group (driver and dask's
+    # processes): sent the same way here, once the runs have started (a
+    # Ctrl-C during the local cluster's start is ignored, doc/python.md), at
+    # five moments drawn once.
+    meshes, fake = corpus
+    env = dict(os.environ, FAKE_DELAY="0.5")
+    before = scratch_folders()
+    for i, delay in enumerate((0.3, 1.9, 0.0, 2.7, 1.2)):
+        db = tmp_path / f"study{i}.sqlite"
+        p = subprocess.Popen(study_command(meshes, db, fake), env=env, stdout=subprocess.DEVNULL,
+                             stderr=subprocess.PIPE, text=True, start_new_session=True)
+        deadline = time.time() + 120
+        while not os.path.isdir(str(db) + ".scratch") or not any(Path(str(db) + ".scratch").iterdir()):
+            assert time.time() < deadline and p.poll() is None, "no run started"
+            time.sleep(0.02)
+        time.sleep(delay)
+        os.killpg(p.pid, signal.SIGINT)
+        _, err = p.communicate(timeout=120)
+        assert p.returncode == 130, err
+        assert "Traceback" not in err and "still alive" not in err, err
+        assert err.strip().splitlines()[-1].endswith("run the same command again to resume") or \
+            "interrupted before any run" in err, err
+        assert runs_left(meshes) == [], f"runs left behind after Ctrl-C at {delay} s"
+        assert not os.path.exists(str(db) + ".scratch")
+    assert scratch_folders() == before
+
+
+def test_killed_study_resumes_with_every_row_once(corpus, tmp_path):
+    # The whole study (driver and workers) killed by SIGKILL: its runs die
+    # with their workers, and the next study keeps every finished row as it
+    # was, runs the others once, and removes the dead one's scratch folder.
+    meshes, fake = corpus
+    db = tmp_path / "study.sqlite"
+    env = dict(os.environ, FAKE_DELAY="0.5")
+    p = subprocess.Popen(study_command(meshes, db, fake), env=env, stdout=subprocess.DEVNULL,
+                         stderr=subprocess.DEVNULL, start_new_session=True)
+    deadline = time.time() + 120
+    while count_rows(db) < 3 and time.time() < deadline and p.poll() is None:
+        time.sleep(0.1)
+    os.killpg(p.pid, signal.SIGKILL)
+    p.wait(timeout=60)
+    assert runs_left(meshes) == []
+    first = rows_of(db)
+    assert 3 <= len(first) < len(EXPECTED_KEYS)
+    assert os.path.isdir(str(db) + ".scratch")  # left by the killed driver
+    p = subprocess.run(study_command(meshes, db, fake), capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0, p.stderr
+    assert f"{len(first)} already in" in p.stderr
+    rows = rows_of(db)
+    check_rows(rows)
+    for key, row in first.items():
+        assert rows[key] == row
+    assert not os.path.exists(str(db) + ".scratch")
+
+
+def test_second_driver_on_one_database_refuses(corpus, tmp_path):
+    meshes, fake = corpus
+    db = tmp_path / "study.sqlite"
+    env = dict(os.environ, FAKE_DELAY="0.5")
+    first = subprocess.Popen(study_command(meshes, db, fake), env=env, stdout=subprocess.DEVNULL,
+                             stderr=subprocess.PIPE, text=True)
+    deadline = time.time() + 120
+    while count_rows(db) < 1 and time.time() < deadline and first.poll() is None:
+        time.sleep(0.1)
+    second = subprocess.run(study_command(meshes, db, fake), capture_output=True, text=True, timeout=120)
+    assert second.returncode == 1
+    assert f"another dlf-study (pid {first.pid}) is running on {db}" in second.stderr, second.stderr
+    _, err = first.communicate(timeout=300)
+    assert first.returncode == 0, err
     check_rows(rows_of(db))
 
 
