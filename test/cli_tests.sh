@@ -905,10 +905,12 @@ check "atlas blobby_3cc: 3 components" equals "$(json_get b3.json "" components)
 printf 'OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n' > cloud.off
 printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n2 0 0\n3 0 0\n3 0 1 2\n3 0 2 3\n' > flat.off
 for bad in empty cloud flat; do
-  "$DLF" atlas "$bad.off" -o "$bad.obj" > "$bad.out" 2> "$bad.err"
+  # Output names of their own: an earlier check writes flat.obj.
+  rm -f "atlas_$bad.obj"
+  "$DLF" atlas "$bad.off" -o "atlas_$bad.obj" > "$bad.out" 2> "$bad.err"
   check "atlas on $bad input exits 1" equals "$?" 1
   check "atlas on $bad input: one stderr line" equals "$(wc -l < "$bad.err")" 1
-  check "atlas on $bad input: no output file" test ! -e "$bad.obj"
+  check "atlas on $bad input: no output file" test ! -e "atlas_$bad.obj"
 done
 check "atlas on a point cloud says so" grep -q "point cloud" cloud.err
 check "atlas on all-degenerate faces says so" grep -q "all 2 faces are degenerate" flat.err
