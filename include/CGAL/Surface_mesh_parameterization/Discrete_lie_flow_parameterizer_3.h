@@ -24,7 +24,7 @@
 // to the constructor's one-line refusal.
 // CGAL 5.5's orbifold_enums.h defines get_orbifold_type() without `inline`;
 // declared inline first, the header may be included by every translation unit.
-#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_ORBIFOLD_ENUMS_H
+#if !defined(CGAL_SURFACE_MESH_PARAMETERIZATION_ORBIFOLD_ENUMS_H) && !defined(DOXYGEN_RUNNING)
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 inline const char* get_orbifold_type(int orb_type);
