@@ -88,7 +88,10 @@ void run_disk(const Indexed_mesh& mesh, SMP::Discrete_lie_flow_mode mode)
   Parameterizer parameterizer(Parameterizer::Initial_parameterizer(), options);
   const SMP::Error_code code = parameterizer.parameterize(sm, bhd, uvmap, vimap, vpmap);
   const SMP::Discrete_lie_flow_report& R = parameterizer.report();
-  if(!known_status(code) || R.status != code) violation("disk: unknown or inconsistent status");
+  // CGAL's entry point returns CGAL's nearest code; the report keeps the precise one.
+  if(!known_status(code) || !known_status(R.status) ||
+     SMP::discrete_lie_flow_cgal_error_code(R.status) != code)
+    violation("disk: unknown or inconsistent status");
   if(code != SMP::OK) {
     if(R.message.empty()) violation("disk: error without a message");
     return;
