@@ -162,13 +162,7 @@ Error_code flow_disk(Disk_problem& P, std::vector<Vec2>& uv, const Discrete_lie_
   }
   const Orientation_count cc = count_orientations_2(uv, caller_faces);
   R.caller_inverted_faces = cc.inverted + cc.degenerate;
-  Flow_goals goals;
-  goals.d_area = R.final_d_area;
-  goals.d_area_goal = 2 + opt.tolerance;
-  goals.share_error = R.final_share_error;
-  if(opt.mode == Discrete_lie_flow_mode::CERTIFIED && opt.certified.share_tolerance > 0 && R.final_share_error > 0)
-    goals.share_goal = opt.certified.share_tolerance;
-  return report_verdict(out, R, goals);
+  return report_verdict(out, R, surface_goals(opt, R));
 }
 
 } // namespace dlf

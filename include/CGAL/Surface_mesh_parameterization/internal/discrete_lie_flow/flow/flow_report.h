@@ -88,6 +88,20 @@ struct Flow_goals
   double mean_log = 0, mean_log_goal = -1;  ///< the sphere's mean |log area ratio| (goal > 0) only
 };
 
+/// The goals every surface flow is judged by, from the options and the
+/// filled report: D_area, and the share error of a density in the certified
+/// mode (the paper modes stop on D_area alone).
+inline Flow_goals surface_goals(const Discrete_lie_flow_options& opt, const Discrete_lie_flow_report& R)
+{
+  Flow_goals goals;
+  goals.d_area = R.final_d_area;
+  goals.d_area_goal = 2 + opt.tolerance;
+  goals.share_error = R.final_share_error;
+  if(opt.mode == Discrete_lie_flow_mode::CERTIFIED && opt.certified.share_tolerance > 0 && R.final_share_error > 0)
+    goals.share_goal = opt.certified.share_tolerance;
+  return goals;
+}
+
 /// "d_area 2.03 > 2.01; ..." for each goal of `g` not met, empty if none.
 inline std::string missed_goals(const Flow_goals& g)
 {

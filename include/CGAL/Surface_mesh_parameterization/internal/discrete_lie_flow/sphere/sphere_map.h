@@ -152,12 +152,7 @@ Error_code map_to_sphere(Sphere_problem& P, std::vector<Vec3>& points, const Dis
   R.caller_inverted_faces = caller.inverted + caller.degenerate;
   const Orientation_count flowing = count_orientations_sphere(p, out.domain_faces);
   R.flowing_inverted_faces = flowing.inverted + flowing.degenerate;
-  Flow_goals goals;
-  goals.d_area = R.final_d_area;
-  goals.d_area_goal = 2 + opt.tolerance;
-  goals.share_error = R.final_share_error;
-  if(opt.mode == Discrete_lie_flow_mode::CERTIFIED && opt.certified.share_tolerance > 0 && R.final_share_error > 0)
-    goals.share_goal = opt.certified.share_tolerance;
+  Flow_goals goals = surface_goals(opt, R);
   if(opt.mode != Discrete_lie_flow_mode::LITERAL) {
     goals.mean_log = flat_mean_abs_log_ratio(p, P.faces, P.target);
     goals.mean_log_goal = opt.sphere.log_area_tolerance;
