@@ -3,8 +3,9 @@
 //
 // Algorithm 1 of the paper as printed, on the unit sphere, as a policy of the flow
 // driver: (2) Delaunay flips of the flowing mesh; (3) h_Ω, the vertex area
-// elements of the flowing mesh, scaled to the integral of h_M, the targets
-// lumped once on the input triangles (1); (4) the Neumann Poisson problem
+// elements of the flowing mesh, and h_M, the targets lumped once on the
+// input triangles (1), scaled to the integral of h_Ω (the print scales h_Ω
+// to ∫h_M instead, which scales g by a constant); (4) the Neumann Poisson problem
 // Δg = h_M − h_Ω; (5) the vertex gradients ∇g; (6) λ = μ·min_t λ̃_t (Eq. 5),
 // or a fixed step; (7) φ += λ∇g; (8) until ‖h_M − h_Ω‖² < ε. No line search,
 // no collapse guard, no plateau test: a step that folds or degenerates a
