@@ -309,6 +309,10 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
     ("share-tolerance", po::value<double>(&s.options.certified.share_tolerance)->value_name("X")->default_value(s.options.certified.share_tolerance),
      "with a density, certified mode: converged also needs every region of the density (every set of faces below or above "
      "a density value) within X of its prescribed share of the domain area, relative (0: d_area alone decides)")
+    ("coarse-to-fine-faces", po::value<std::size_t>(&s.options.disk.coarse_to_fine_faces)->value_name("N")
+       ->default_value(s.options.disk.coarse_to_fine_faces),
+     "certified mode: a disk of N faces or more flows coarse to fine (coarser disks made by collapses flowed "
+     "first, their map carried down; 0: never)")
     ("history", "add the per-iteration history to the report")
     ("quiet,q", "print nothing on success (no progress, no summary)")
     ("verbose,v", "progress with the step's details (critical step, limiting face, backtracks), never "

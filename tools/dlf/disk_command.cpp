@@ -173,6 +173,12 @@ json make_report(const Disk_settings& s, const Indexed_mesh& input, const Seam_c
   if(density.source != "none") j["density"]["share_error"] = R.final_share_error; // density_levels.h
   if(!density.regions.empty()) j["regions"] = regions_json(density, final_metrics != nullptr);
   if(s.history_in_report) j["history"] = history_json(R.history);
+  j["levels"] = json::array();
+  for(const SMP::Discrete_lie_flow_level& l : R.levels)
+    j["levels"].push_back({ { "vertices", l.vertices }, { "faces", l.faces }, { "iterations", l.iterations },
+                            { "d_area", l.d_area }, { "seconds", l.seconds } });
+  j["seconds"]["levels"] = R.seconds_levels;
+  j["levels_refused"] = R.levels_refused.empty() ? json(nullptr) : json(R.levels_refused);
   return j;
 }
 
@@ -199,6 +205,16 @@ void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh
         << loops.size() - 1 << (loops.size() == 2 ? " hole floats" : " holes float") << "\n"
         << "  initial map: " << s.init << " places the outer loop; the start is Tutte's embedding of the disk with "
            "its holes filled\n";
+  }
+  if(!R.levels.empty()) {
+    out << "  coarse to fine:";
+    for(std::size_t k = 0; k + 1 < R.levels.size(); ++k)
+      out << (k ? ", " : " ") << R.levels[k].faces << " faces " << R.levels[k].iterations << " it";
+    out << "; start d_area " << R.levels.back().d_area << " (levels " << std::setprecision(3)
+        << R.seconds_levels + [&] { double t = 0; for(const auto& l : R.levels) t += l.seconds; return t; }() << " s)\n"
+        << std::setprecision(8);
+  } else if(!R.levels_refused.empty()) {
+    out << "  coarse to fine refused (" << R.levels_refused << "): the flow ran from the start\n";
   }
   out
       << "  iterations " << R.iterations << " (" << SMP::discrete_lie_flow_stop_reason_name(R.stop_reason) << ")\n";

@@ -307,6 +307,17 @@ struct Discrete_lie_flow_disk_options
 {
   /// What the boundary vertices slide on; `AUTOMATIC` detects it from the initial map.
   Discrete_lie_flow_border border = Discrete_lie_flow_border::AUTOMATIC;
+  /// The certified mode flows a disk of at least this many faces coarse to
+  /// fine (0: never): a hierarchy of coarser disks made by collapses that
+  /// keep the border and the start fold-free, the coarsest flowed, its map
+  /// carried down level by level (exact predicate at each), the finest
+  /// flowed from there. The finest level's iterations are what a large mesh
+  /// costs; this takes most of them away (doc/coarse_to_fine.md).
+  std::size_t coarse_to_fine_faces = 100000;
+  /// Threads of the certified flow's vertex sweeps on disks of 100,000
+  /// faces or more (smaller ones sweep on one): 0 the hardware threads (at
+  /// most 8), else that many. The result is the same whatever the number.
+  int threads = 0;
 };
 
 /// \ingroup PkgDiscreteLieFlowOptions

@@ -61,6 +61,18 @@ struct Discrete_lie_flow_map_difference
 };
 
 /// \ingroup PkgDiscreteLieFlowOptions
+/// One coarse level of the disk's coarse-to-fine flow
+/// (`Discrete_lie_flow_report::levels`, coarsest first).
+struct Discrete_lie_flow_level
+{
+  std::size_t vertices = 0;   ///< vertices of the level
+  std::size_t faces = 0;      ///< faces of the level
+  std::size_t iterations = 0; ///< flow iterations on the level (0: the map carried down and swept vertex by vertex)
+  double d_area = 0;          ///< D_area of the level's map (its own targets) after its work
+  double seconds = 0;         ///< the level's work: its flow, or the map carried down and swept
+};
+
+/// \ingroup PkgDiscreteLieFlowOptions
 /// What a run of the Discrete Lie Flow did, on the disk
 /// (`Discrete_lie_flow_parameterizer_3`) and on the sphere
 /// (`Discrete_lie_flow_sphere_parameterizer_3`): the same names for the same
@@ -159,6 +171,16 @@ struct Discrete_lie_flow_report
   std::size_t split_vertices_removed = 0;
   /// The sphere: iterations of the coarse mesh's flow (0 without a coarse start).
   std::size_t coarse_iterations = 0;
+  /// The disk, certified mode: the coarse-to-fine flow's levels, coarsest
+  /// first, the last one the caller's mesh with the map carried down to it
+  /// (empty when the flow ran on the mesh alone,
+  /// `Discrete_lie_flow_disk_options::coarse_to_fine_faces`). `iterations`
+  /// and the history are the finest level's flow, from that map.
+  std::vector<Discrete_lie_flow_level> levels;
+  /// The disk: the time the coarse levels took to build (within `seconds_flow`).
+  double seconds_levels = 0;
+  /// The disk: why the coarse levels' map was not taken as the start (empty when it was, or when there were none).
+  std::string levels_refused;
 };
 
 /// \ingroup PkgDiscreteLieFlowOptions

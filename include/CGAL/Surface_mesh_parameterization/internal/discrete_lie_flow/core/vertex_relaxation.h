@@ -9,9 +9,11 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VERTEX_RELAXATION_H
 
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/geometry.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/morton_order.h>
 
 #include <CGAL/enum.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -109,6 +111,48 @@ bool moved_vertex_is_positive(const Vertex_faces& around, std::size_t begin, std
   }
   return true;
 }
+
+/// A fixed split of the vertices for sweeps on several threads: `parts`
+/// consecutive runs of the Morton order of the input points (spatially
+/// compact regions), each with its interior (the vertices whose neighbours
+/// all lie in the region) in that order, and the separator, the remaining
+/// vertices, in that order too (consecutive moves then touch nearby memory:
+/// visited in index order, the regions' sweeps ran 1.7 times slower). No
+/// face has corners in two interiors: interiors move concurrently without
+/// touching a shared face.
+struct Sweep_partition
+{
+  std::vector<std::vector<std::size_t> > interior;
+  std::vector<std::size_t> separator;
+
+  Sweep_partition() = default;
+  Sweep_partition(const std::vector<Vec3>& xyz, const std::vector<Face>& faces, std::size_t parts)
+    : Sweep_partition(morton_order(xyz), faces, parts)
+  {}
+
+  /// From a vertex order computed once (a coarse level keeps its finer
+  /// level's), on the vertices with `keep[v]` (all when null).
+  Sweep_partition(const std::vector<std::size_t>& order, const std::vector<Face>& faces, std::size_t parts,
+                  const std::vector<char>* keep = nullptr)
+  {
+    parts = (std::max)(std::size_t(1), parts);
+    const std::size_t n = order.size();
+    std::vector<std::size_t> region(n);
+    for(std::size_t i = 0; i < n; ++i) region[order[i]] = i * parts / (std::max)(n, std::size_t(1));
+    std::vector<char> cut(n, 0);
+    for(const Face& t : faces)
+      for(int k = 0; k < 3; ++k) {
+        const std::size_t a = std::size_t(t[k]), b = std::size_t(t[(k + 1) % 3]);
+        if(region[a] != region[b]) cut[a] = cut[b] = 1;
+      }
+    interior.assign(parts, std::vector<std::size_t>());
+    for(std::size_t v : order) {
+      if(keep && !(*keep)[v]) continue;
+      if(cut[v]) separator.push_back(v);
+      else interior[region[v]].push_back(v);
+    }
+  }
+};
 
 } // namespace dlf
 } // namespace internal

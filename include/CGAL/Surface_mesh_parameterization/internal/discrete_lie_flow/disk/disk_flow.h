@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/area_elements.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/border_spacing.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/boundary_curve.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/coarse_to_fine.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/certification.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/density_levels.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/disk_holes.h>
@@ -127,7 +128,11 @@ Error_code flow_disk(Disk_problem& P, std::vector<Vec2>& uv, const Discrete_lie_
     Planar_flow_settings settings;
     std::unique_ptr<Tutte_interior_system<EigenSolver> > own;
     Tutte_interior_system<EigenSolver>* tutte = start;
-    if(opt.fixed_step == 0 && curve.kind() == Discrete_lie_flow_border::CIRCLE) {
+    // A large disk flows coarse to fine (coarse_to_fine.h), whose coarsest
+    // level is spaced by area instead: its Tutte system is a small one.
+    const bool levels = opt.fixed_step == 0 && opt.disk.coarse_to_fine_faces > 0 && P.faces.size() >= opt.disk.coarse_to_fine_faces &&
+                        coarse_to_fine_start<EigenSolver>(P, uv, curve, opt, settings, R);
+    if(!levels && opt.fixed_step == 0 && curve.kind() == Discrete_lie_flow_border::CIRCLE) {
       if(tutte == nullptr) {
         own.reset(new Tutte_interior_system<EigenSolver>(P, uv.size(), solver));
         tutte = own.get();

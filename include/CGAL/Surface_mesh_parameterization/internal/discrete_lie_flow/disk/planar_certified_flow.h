@@ -49,6 +49,12 @@ struct Planar_flow_settings
   /// iteration's global step did ends them, unless the sweeps left could
   /// bring D_area to the tolerance at its gain.
   double relaxation_least_gain = 0.05;
+  /// From this many faces the sweeps visit the vertices region by region
+  /// (`Sweep_partition` of `sweep_parts` regions of the Morton order), the
+  /// regions' interiors on the threads of `Discrete_lie_flow_disk_options::threads`:
+  /// the same map for any number of threads.
+  std::size_t parallel_sweeps_from = 100000;
+  std::size_t sweep_parts = 8;
   /// The direction becomes the regularised Gauss–Newton one
   /// (planar_gauss_newton.h) for good once D_area is below `newton_below`
   /// and an iteration took off less than `newton_when_slower` of D_area − 2
@@ -313,7 +319,10 @@ private:
       m_around = Vertex_faces(m_n, m_P.faces);
       m_movable.assign(m_n, 1);
       for(int b : m_P.boundary) m_movable[std::size_t(b)] = 0;
+      if(m_P.faces.size() >= m_settings.parallel_sweeps_from)
+        m_partition = Sweep_partition(morton_order(m_P.xyz), m_P.faces, m_settings.sweep_parts, &m_movable);
     }
+    const int threads = disk_sweep_threads(m_opt, m_P.faces.size(), m_settings.parallel_sweeps_from);
     const double mu = step_fraction(m_opt);
     m_trial = m_uv; // the committed map, kept in case the sweeps' rounding misleads them
     // Sweeps pay where the global step is held back (a few stiff faces cap
@@ -325,7 +334,9 @@ private:
     const double goal = 2 + m_opt.tolerance;
     double E_sweep = m_E;
     for(std::size_t k = 0; k < m_settings.relaxation_sweeps; ++k) {
-      const Relaxation_outcome r = relax_planar_vertices(m_P.faces, m_around, m_energy, mu, m_movable, m_uv, m_u);
+      const Relaxation_outcome r =
+        m_partition.interior.empty() ? relax_planar_vertices(m_P.faces, m_around, m_energy, mu, m_movable, m_uv, m_u)
+                                     : relax_planar_vertices(m_P.faces, m_around, m_energy, mu, m_partition, threads, m_uv, m_u);
       out.rejected_by_exact_check += r.refused_by_exact_check;
       if(r.moved == 0) break;
       const double gain = E_sweep - r.energy;
@@ -366,6 +377,7 @@ private:
   Eigen::VectorXd m_gr, m_d;
   Vertex_faces m_around;
   std::vector<char> m_movable;
+  Sweep_partition m_partition; // large meshes: built with m_around
   const Density_levels m_levels;     // the caller's faces only
   const Area_barrier_energy m_caller_energy; // D_area of the caller's faces (holes)
   bool m_coupled;

@@ -19,7 +19,6 @@
 
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/area_barrier_energy.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/certification.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/morton_order.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/parallel_ranges.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/vertex_relaxation.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere/sphere_gauss_newton.h>
@@ -145,41 +144,6 @@ inline Relaxation_outcome relax_sphere_vertices(const std::vector<Face>& faces, 
     relax_sphere_vertex(v, faces, around, energy, kappa, mu, flat_weight, p, u, w, S, Sw, u_new, w_new, out);
   return out;
 }
-
-/// A fixed split of the vertices for sweeps on several threads: `parts`
-/// consecutive runs of the Morton order of the input points (spatially
-/// compact regions), each with its interior (the vertices whose neighbours
-/// all lie in the region) in that order, and the separator, the remaining
-/// vertices, in that order too (consecutive moves then touch nearby memory:
-/// visited in index order, the regions' sweeps ran 1.7 times slower). No
-/// face has corners in two interiors: interiors move concurrently without
-/// touching a shared face.
-struct Sweep_partition
-{
-  std::vector<std::vector<std::size_t> > interior;
-  std::vector<std::size_t> separator;
-
-  Sweep_partition() = default;
-  Sweep_partition(const std::vector<Vec3>& xyz, const std::vector<Face>& faces, std::size_t parts)
-  {
-    parts = (std::max)(std::size_t(1), parts);
-    const std::size_t n = xyz.size();
-    const std::vector<std::size_t> order = morton_order(xyz);
-    std::vector<std::size_t> region(n);
-    for(std::size_t i = 0; i < n; ++i) region[order[i]] = i * parts / (std::max)(n, std::size_t(1));
-    std::vector<char> cut(n, 0);
-    for(const Face& t : faces)
-      for(int k = 0; k < 3; ++k) {
-        const std::size_t a = std::size_t(t[k]), b = std::size_t(t[(k + 1) % 3]);
-        if(region[a] != region[b]) cut[a] = cut[b] = 1;
-      }
-    interior.assign(parts, std::vector<std::size_t>());
-    for(std::size_t v : order) {
-      if(cut[v]) separator.push_back(v);
-      else interior[region[v]].push_back(v);
-    }
-  }
-};
 
 /// One sweep over every vertex, the interiors of `partition` on up to
 /// `threads` threads, then the separator. Each interior is swept from the

@@ -1,0 +1,242 @@
+// Copyright (c) 2026 The Discrete Lie Flow authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The coarse-to-fine start of the certified disk flow: the coarsest level
+// of disk_hierarchy.h flowed to its targets, its map carried down level by
+// level (each level certified by the exact predicate, its vertices swept
+// one by one), so that the finest level's flow starts near its targets.
+// On a large mesh almost every iteration of the plain flow is spent at the
+// finest resolution moving the smooth modes a coarse level moves for a
+// fraction of the cost (doc/coarse_to_fine.md).
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_COARSE_TO_FINE_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_COARSE_TO_FINE_H
+
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/area_barrier_energy.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/certification.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/morton_order.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/vertex_relaxation.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/border_spacing.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/boundary_curve.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/disk_hierarchy.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/disk_problem.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/planar_certified_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/planar_relaxation.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow/flow_driver.h>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace dlf {
+
+/// Internal knobs of the coarse-to-fine start (doc/coarse_to_fine.md).
+struct Coarse_to_fine_settings
+{
+  /// Coarsen while the level has more than this share of the smallest
+  /// mesh that flows coarse to fine (`coarse_to_fine_faces`): 20,000 faces
+  /// by default, where a factorization costs little.
+  double coarsest_share = 0.2;
+  /// A level that removes less than this share of the vertices left ends the hierarchy.
+  double least_removed = 0.05;
+  /// The coarsest level flows to this share of the caller's tolerance: its
+  /// map carried down loses some of it to the finer faces.
+  double coarse_tolerance_share = 0.5;
+  /// Vertex sweeps on each finer level: first over the vertices put back,
+  /// then over all until D_area is within the coarsest level's tolerance
+  /// (on the caller's mesh: within `finest_goal_share` of the caller's, so
+  /// that its flow has nothing left to do), or a sweep took off less than
+  /// `least_sweep_gain` of D_area − 2, or `most_sweeps` ran. A sweep costs a
+  /// small fraction of an iteration of the flow (doc/coarse_to_fine.md).
+  std::size_t put_back_sweeps = 2;
+  double finest_goal_share = 0.97;
+  double level_goal_share = 2;
+  double least_sweep_gain = 0.05;
+  std::size_t most_sweeps = 16;
+  /// On the caller's mesh, where a sweep costs 1–2% of an iteration of the flow.
+  double finest_least_sweep_gain = 0.02;
+  std::size_t finest_most_sweeps = 40;
+  /// Regions of the sweeps' split for threads (`Sweep_partition`): fixed,
+  /// so that the map does not depend on the number of threads.
+  std::size_t sweep_parts = 8;
+};
+
+/// The levels of `P` from the start `uv`, finest first, until one has at
+/// most `coarsest` faces or a level removes too few vertices.
+inline std::vector<Disk_level> build_disk_levels(const Disk_problem& P, const std::vector<Vec2>& uv,
+                                                 const std::vector<char>& fixed, std::size_t coarsest,
+                                                 const Coarse_to_fine_settings& s)
+{
+  std::vector<Disk_level> levels;
+  std::size_t alive = uv.size();
+  for(;;) {
+    const std::vector<Face>& F = levels.empty() ? P.faces : levels.back().faces;
+    const std::vector<double>& T = levels.empty() ? P.target : levels.back().target;
+    if(F.size() <= coarsest) break;
+    Disk_level L;
+    const std::size_t removed = coarsen_disk_level(uv.size(), F, T, uv, P.xyz, fixed, L);
+    if(removed == 0) break;
+    levels.push_back(std::move(L));
+    if(double(removed) < s.least_removed * double(alive)) break;
+    alive -= removed;
+  }
+  return levels;
+}
+
+/// Flows the coarsest level `L` of `P` (on its own vertices) from `uv` and
+/// writes its map into `fine` at its vertices; `curve` follows its border.
+template <class EigenSolver>
+Discrete_lie_flow_level flow_coarsest_level(const Disk_problem& P, const Disk_level& L, const std::vector<Vec2>& uv,
+                                            Boundary_curve& curve, const Discrete_lie_flow_options& opt,
+                                            const Planar_flow_settings& flow_settings, const Coarse_to_fine_settings& s,
+                                            std::vector<Vec2>& fine)
+{
+  Disk_problem C;
+  std::vector<int> index(uv.size(), -1), vertex_of;
+  C.faces = L.faces;
+  C.target = L.target;
+  for(Face& f : C.faces)
+    for(int& v : f) {
+      if(index[std::size_t(v)] < 0) {
+        index[std::size_t(v)] = int(vertex_of.size());
+        vertex_of.push_back(v);
+        C.xyz.push_back(P.xyz[std::size_t(v)]);
+      }
+      v = index[std::size_t(v)];
+    }
+  for(int b : P.boundary) C.boundary.push_back(index[std::size_t(b)]);
+  std::vector<Vec2> coarse_uv(vertex_of.size());
+  for(std::size_t i = 0; i < vertex_of.size(); ++i) coarse_uv[i] = uv[std::size_t(vertex_of[i])];
+  Discrete_lie_flow_options coarse = opt;
+  coarse.callback = nullptr;
+  coarse.record_history = false;
+  coarse.tolerance = opt.tolerance * s.coarse_tolerance_share;
+  coarse.certified.share_tolerance = 0; // the finest level's faces hold the density's regions
+  Planar_flow_settings settings = flow_settings;
+  EigenSolver solver; // the caller's solver keeps the finest level's analysis
+  // On the circle the coarsest level's border is spaced by area, as the
+  // plain flow's start is (border_spacing.h), with its own small system.
+  Tutte_interior_system<EigenSolver> tutte(C, coarse_uv.size(), solver);
+  if(curve.kind() == Discrete_lie_flow_border::CIRCLE)
+    settings.coupled_metric = respace_border_by_area<EigenSolver>(C, coarse_uv, curve, 0.5, tutte);
+  Planar_certified_flow<EigenSolver> flow(C, coarse_uv, curve, coarse, solver, settings,
+                                          tutte.solver().analyses() > 0 ? &tutte.solver() : nullptr);
+  const Flow_outcome flowed = run_flow(flow, coarse);
+  for(std::size_t i = 0; i < vertex_of.size(); ++i) fine[std::size_t(vertex_of[i])] = coarse_uv[i];
+  Discrete_lie_flow_level level;
+  level.vertices = vertex_of.size();
+  level.faces = C.faces.size();
+  level.iterations = flowed.iterations;
+  level.d_area = flowed.final_d_area;
+  return level;
+}
+
+/// Puts the vertices `D` removed back into `fine` (prolong_disk_level())
+/// and sweeps the finer level (`F`, `target`): its D_area after, or NaN
+/// when a vertex found no position.
+inline double carry_down_level(const Disk_decimation& D, const std::vector<Face>& F, const std::vector<double>& target,
+                               const std::vector<Vec2>& start, const std::vector<char>& fixed,
+                               const std::vector<std::size_t>& order, int threads, double goal, bool finest,
+                               const Discrete_lie_flow_options& opt, const Coarse_to_fine_settings& s,
+                               std::vector<Vec2>& fine)
+{
+  if(!prolong_disk_level(D, start, fine)) return std::numeric_limits<double>::quiet_NaN();
+  const std::size_t n = fine.size();
+  const Area_barrier_energy energy(target);
+  std::vector<double> u;
+  signed_areas_2(fine, F, u);
+  const Vertex_faces around(n, F);
+  std::vector<char> keep(n, 0);
+  for(int v : D.removed) keep[std::size_t(v)] = 1;
+  const double mu = step_fraction(opt);
+  {
+    const Sweep_partition put_back(order, F, s.sweep_parts, &keep);
+    for(std::size_t k = 0; k < s.put_back_sweeps; ++k) relax_planar_vertices(F, around, energy, mu, put_back, threads, fine, u);
+  }
+  for(std::size_t v = 0; v < n; ++v) keep[v] = !fixed[v] && around.first[v + 1] > around.first[v];
+  const Sweep_partition all(order, F, s.sweep_parts, &keep);
+  const std::size_t most = finest ? s.finest_most_sweeps : s.most_sweeps;
+  const double least_gain = finest ? s.finest_least_sweep_gain : s.least_sweep_gain;
+  double E = energy.value(u);
+  for(std::size_t k = 0; k < most && E > goal; ++k) {
+    const Relaxation_outcome r = relax_planar_vertices(F, around, energy, mu, all, threads, fine, u);
+    const double gain = E - r.energy;
+    E = r.energy;
+    if(r.moved == 0 || gain < least_gain * (E + gain - 2)) break;
+  }
+  signed_areas_2(fine, F, u); // the sweeps' incremental sums drop
+  return energy.value(u);
+}
+
+/// Replaces the positively oriented start `uv` of `P` (and the border's
+/// state in `curve`) by the coarse-to-fine start when the hierarchy has a
+/// level, every level's map is certified and the start's D_area is not
+/// raised; else leaves both as they are and says why in
+/// `R.levels_refused`. Fills `R.levels` (the last one the caller's mesh)
+/// and `R.seconds_levels`; `flow_settings` become the finest level's.
+template <class EigenSolver>
+bool coarse_to_fine_start(const Disk_problem& P, std::vector<Vec2>& uv, Boundary_curve& curve,
+                          const Discrete_lie_flow_options& opt, Planar_flow_settings& flow_settings,
+                          Discrete_lie_flow_report& R, const Coarse_to_fine_settings& s = Coarse_to_fine_settings())
+{
+  typedef std::chrono::steady_clock Clock;
+  const auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  const auto refuse = [&R](const std::string& why) { R.levels.clear(); R.levels_refused = why; return false; };
+  const std::size_t n = uv.size();
+  Clock::time_point t = Clock::now();
+  const std::size_t coarsest = std::size_t(s.coarsest_share * double(opt.disk.coarse_to_fine_faces));
+  std::vector<char> fixed(n, 0);
+  for(int b : P.boundary) fixed[std::size_t(b)] = 1;
+  std::vector<Disk_level> levels = build_disk_levels(P, uv, fixed, coarsest, s);
+  R.seconds_levels = since(t);
+  if(levels.empty())
+    return refuse(P.faces.size() <= coarsest ? "the mesh is no larger than the coarsest level" : "no interior vertex could be removed");
+
+  t = Clock::now();
+  std::vector<Vec2> fine(uv);
+  Boundary_curve coarse_curve = curve;
+  R.levels.push_back(flow_coarsest_level<EigenSolver>(P, levels.back(), uv, coarse_curve, opt, flow_settings, s, fine));
+  R.levels.back().seconds = since(t);
+  const std::vector<std::size_t> order = morton_order(P.xyz);
+  const int threads = disk_sweep_threads(opt, P.faces.size());
+  for(std::size_t l = levels.size(); l-- > 0;) {
+    t = Clock::now();
+    const std::vector<Face>& F = l == 0 ? P.faces : levels[l - 1].faces;
+    const double goal = 2 + (l == 0 ? s.finest_goal_share : s.level_goal_share) * opt.tolerance;
+    Discrete_lie_flow_level level;
+    level.faces = F.size();
+    level.vertices = R.levels.back().vertices + levels[l].from_above.removed.size();
+    level.d_area = carry_down_level(levels[l].from_above, F, l == 0 ? P.target : levels[l - 1].target, uv, fixed, order,
+                                    threads, goal, l == 0, opt, s, fine);
+    if(std::isnan(level.d_area))
+      return refuse("a vertex put back on the level of " + std::to_string(F.size()) + " faces found no position with a positive star");
+    levels.pop_back(); // its faces are not needed any more
+    level.seconds = since(t);
+    R.levels.push_back(level);
+  }
+  // The caller's faces, certified once more as a whole, and no worse than the start.
+  std::vector<double> u0;
+  signed_areas_2(uv, P.faces, u0);
+  const double E0 = Area_barrier_energy(P.target).value(u0);
+  if(!count_orientations_2(fine, P.faces).all_positive()) return refuse("the map carried down has a triangle that is not positive");
+  if(!(R.levels.back().d_area <= E0))
+    return refuse("the map carried down has D_area " + std::to_string(R.levels.back().d_area) + ", above the start's " + std::to_string(E0));
+  uv.swap(fine);
+  curve = coarse_curve;
+  flow_settings.coupled_metric = false; // the coarsest level's flow has slid the border where it belongs
+  return true;
+}
+
+} // namespace dlf
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
