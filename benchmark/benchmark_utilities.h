@@ -10,6 +10,8 @@
 
 #include <CGAL/subdivision_method_3.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/Kernel_traits.h>
 
 #include <boost/program_options.hpp>
 
@@ -24,7 +26,9 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <map>
+#include <random>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -115,26 +119,73 @@ inline std::filesystem::path mesh_directory(const char* program, const std::stri
   return std::filesystem::path();
 }
 
-/// A mesh spec: "name.off", "name.off+loopK" or "name.off+midK".
+/// A mesh spec: "name.off", then "+loopK" or "+midK" (subdivided), then
+/// "+scramble" (a share of the interior edges flipped and the interior
+/// vertices moved inside their rings: no longer a subdivision).
 struct Mesh_spec
 {
   std::string file;
   int loops = 0, midpoints = 0;
+  bool scramble = false;
 };
 
-/// False, with `why`, for an unknown subdivision suffix.
+/// False, with `why`, for an unknown suffix.
 inline bool parse_mesh_spec(const std::string& spec, Mesh_spec& out, std::string& why)
 {
   out = Mesh_spec();
-  out.file = spec;
-  const std::size_t plus = spec.find('+');
-  if(plus == std::string::npos) return true;
+  std::size_t plus = spec.find('+');
   out.file = spec.substr(0, plus);
-  const std::string how = spec.substr(plus + 1);
-  if(how.rfind("loop", 0) == 0) out.loops = std::atoi(how.c_str() + 4);
-  else if(how.rfind("mid", 0) == 0) out.midpoints = std::atoi(how.c_str() + 3);
-  else { why = "unknown subdivision '" + how + "'"; return false; }
+  while(plus != std::string::npos) {
+    const std::size_t next = spec.find('+', plus + 1);
+    const std::string how = spec.substr(plus + 1, next == std::string::npos ? std::string::npos : next - plus - 1);
+    if(how.rfind("loop", 0) == 0) out.loops = std::atoi(how.c_str() + 4);
+    else if(how.rfind("mid", 0) == 0) out.midpoints = std::atoi(how.c_str() + 3);
+    else if(how == "scramble") out.scramble = true;
+    else { why = "unknown mesh suffix '" + how + "'"; return false; }
+    plus = next;
+  }
   return true;
+}
+
+/// Flips about 30% of the interior edges (those whose quad is convex about
+/// its normal and whose new triangles are not needles) and moves each
+/// interior vertex by up to 15% of its shortest edge: the same surface, the
+/// regular valences and nested structure of a subdivision gone. A fixed
+/// seed: the same mesh every run.
+template <class SurfaceMesh>
+void scramble(SurfaceMesh& mesh)
+{
+  typedef typename SurfaceMesh::Point Point;
+  typedef typename CGAL::Kernel_traits<Point>::Kernel::Vector_3 Vector;
+  std::mt19937 random(12345);
+  std::uniform_real_distribution<double> unit(0, 1);
+  const std::vector<typename SurfaceMesh::Edge_index> edges(mesh.edges().begin(), mesh.edges().end());
+  for(const auto e : edges) {
+    if(unit(random) > 0.3 || mesh.is_border(e)) continue;
+    const auto h = mesh.halfedge(e);
+    const auto a = mesh.target(h), b = mesh.source(h), c = mesh.target(mesh.next(h)), d = mesh.target(mesh.next(mesh.opposite(h)));
+    bool joined = c == d;
+    for(const auto x : CGAL::vertices_around_target(c, mesh)) joined = joined || x == d;
+    if(joined) continue;
+    const Point &pa = mesh.point(a), &pb = mesh.point(b), &pc = mesh.point(c), &pd = mesh.point(d);
+    const Vector n = CGAL::cross_product(pb - pa, pc - pa) + CGAL::cross_product(pa - pb, pd - pb);
+    const auto side = [&](const Point& p, const Point& q, const Point& r) { return CGAL::cross_product(q - p, r - p) * n; };
+    const auto twice_area = [](const Point& p, const Point& q, const Point& r) {
+      return std::sqrt(CGAL::to_double(CGAL::cross_product(q - p, r - p).squared_length()));
+    };
+    const double cd = CGAL::to_double((pc - pd).squared_length());
+    if(!(side(pc, pd, pa) * side(pc, pd, pb) < 0 && side(pa, pb, pc) * side(pa, pb, pd) < 0)) continue;
+    if(twice_area(pc, pd, pa) < 0.2 * cd || twice_area(pd, pc, pb) < 0.2 * cd) continue;
+    CGAL::Euler::flip_edge(h, mesh);
+  }
+  for(const auto v : mesh.vertices()) {
+    if(mesh.is_border(v)) continue;
+    double shortest = std::numeric_limits<double>::infinity();
+    for(const auto h : CGAL::halfedges_around_target(v, mesh))
+      shortest = (std::min)(shortest, CGAL::to_double((mesh.point(mesh.source(h)) - mesh.point(v)).squared_length()));
+    const double r = 0.15 * std::sqrt(shortest);
+    mesh.point(v) = mesh.point(v) + Vector(r * (2 * unit(random) - 1), r * (2 * unit(random) - 1), r * (2 * unit(random) - 1));
+  }
 }
 
 /// Splits every triangle into four at its edges' midpoints: the same surface,
@@ -171,6 +222,7 @@ void subdivide(SurfaceMesh& mesh, const Mesh_spec& spec)
 {
   if(spec.loops > 0) CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(spec.loops));
   for(int k = 0; k < spec.midpoints; ++k) midpoint_subdivision(mesh);
+  if(spec.scramble) scramble(mesh);
 }
 
 } // namespace dlf_benchmark

@@ -7,15 +7,17 @@
 //  - the default `dlf disk MESH -o OUT.obj --report R.json --history` runs as a user
 //    runs it (whole process, no environment variable set by this program),
 //    timed from outside, with its maximum resident set size (wait4), and the
-//    split its report gives: read, check, initial map, flow setup, the
-//    iterations, write;
-//  - the floor: in this process, the cotangent stiffness of the interior
+//    split its report gives: read, check, initial map, the coarse levels
+//    (each one's faces, iterations, seconds), the finest level's iterations,
+//    write;
+//  - with --floor: in this process, the cotangent stiffness of the interior
 //    (the matrix every Sobolev iteration factorizes) on the Tutte map of the
 //    same mesh, factorized once (symbolic analysis, numeric factorization)
 //    and solved once for two right-hand sides, with the same threads as the
 //    flow chooses (solver_threads.h).
-// The ratio (seconds per iteration) / (one factorization + one solve) says
-// how close an iteration is to its floor.
+// Beside it, the plain flow (`--coarse-to-fine-faces 0`) on the same mesh in
+// the same run: the ratio is the default's whole process over the plain one's.
+// With --floor, one factorization and solve of the finest level's stiffness.
 //
 //   large_meshes --dlf build/tools/dlf --work DIR mannequin-devil.off+loop2 ...
 //
@@ -183,6 +185,54 @@ Floor measure_floor(const Mesh& mesh)
   return f;
 }
 
+// One `dlf disk` run as a user runs it, and what its report says.
+struct Dlf_run
+{
+  Process_run process;
+  nlohmann::json report;
+};
+
+Dlf_run run_dlf(const std::string& dlf, const std::string& off, const std::string& stem, const std::vector<std::string>& extra)
+{
+  Dlf_run r;
+  std::vector<std::string> args = { dlf, "disk", off, "-o", stem + ".obj", "--report", stem + ".json", "--history" };
+  args.insert(args.end(), extra.begin(), extra.end());
+  r.process = run_process(args);
+  std::ifstream in(stem + ".json");
+  if(in) r.report = nlohmann::json::parse(in, nullptr, false);
+  std::error_code ignored;
+  std::filesystem::remove(stem + ".obj", ignored);
+  std::filesystem::remove(stem + ".json", ignored);
+  return r;
+}
+
+// The row of a run: iterations of each level, D_area, folds, times.
+nlohmann::ordered_json run_row(const Dlf_run& r)
+{
+  nlohmann::ordered_json row;
+  row["whole_process_seconds"] = r.process.seconds;
+  row["exit_code"] = r.process.exit_code;
+  row["max_rss_gib"] = r.process.max_rss_gib;
+  const nlohmann::json& R = r.report;
+  if(!R.is_object() || !R.contains("seconds")) return row;
+  row["iterations"] = R["iterations"];
+  row["d_area"] = R["final"]["d_area"];
+  row["inverted"] = R["final"]["inverted_faces"];
+  row["seconds"] = R["seconds"];
+  row["levels"] = R.value("levels", nlohmann::json::array());
+  // Per iteration of the finest level: after the first (which carries the
+  // solver's symbolic analysis), from the history's elapsed times.
+  const nlohmann::json& h = R["history"];
+  const std::size_t k = h.is_array() ? h.size() : 0;
+  row["seconds_per_iteration"] = k >= 2 ? (h[k - 1]["seconds"].get<double>() - h[0]["seconds"].get<double>()) / double(k - 1) : 0.;
+  return row;
+}
+
+double seconds_of(const nlohmann::ordered_json& row, const char* key)
+{
+  return row.contains("seconds") && row["seconds"].contains(key) ? row["seconds"][key].get<double>() : 0.;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -190,14 +240,15 @@ int main(int argc, char** argv)
   namespace po = boost::program_options;
   std::string data_dir = DLF_DATA_DIR, dlf_path = "build/tools/dlf", work, json_path;
   std::vector<std::string> specs;
-  bool floor_only = false;
-  po::options_description desc("large_meshes [options] SPEC...  (SPEC: name.off, name.off+loopK)");
+  bool floor = false, plain = true;
+  po::options_description desc("large_meshes [options] SPEC...  (SPEC: name.off[+loopK|+midK][+scramble])");
   desc.add_options()("help,h", "show this help")
     ("data-dir", po::value<std::string>(&data_dir), "directory with meshes/ (CGAL's data set)")
     ("dlf", po::value<std::string>(&dlf_path), "the dlf tool to time")
     ("work", po::value<std::string>(&work)->required(), "scratch directory for the meshes and outputs")
     ("json", po::value<std::string>(&json_path), "write every number to this JSON file")
-    ("floor-only", po::bool_switch(&floor_only), "measure the floor only (no dlf run)")
+    ("floor", po::bool_switch(&floor), "also measure one factorization and solve of the finest level's stiffness")
+    ("no-plain", "do not run the plain flow (--coarse-to-fine-faces 0) beside the default")
     ("spec", po::value<std::vector<std::string> >(&specs), "mesh specs");
   po::positional_options_description pos;
   pos.add("spec", -1);
@@ -210,15 +261,16 @@ int main(int argc, char** argv)
     std::cerr << "large_meshes: " << e.what() << "\n";
     return 2;
   }
+  plain = vm.count("no-plain") == 0;
   const std::filesystem::path meshes = dlf_benchmark::mesh_directory("large_meshes", data_dir);
   if(meshes.empty()) return 2;
   std::filesystem::create_directories(work);
-  if(!floor_only) dlf_path = std::filesystem::absolute(dlf_path).string();
+  dlf_path = std::filesystem::absolute(dlf_path).string();
 
   std::cout << "load " << dlf_benchmark::loadavg() << "\n";
-  std::printf("%-30s %9s %4s %7s %8s %6s | %6s %6s %6s %6s %7s %6s %6s | %8s %7s %7s %7s | %5s\n", "mesh", "faces", "it",
-              "d_area", "whole s", "GiB", "read", "check", "init", "setup", "per it", "write", "other", "unknowns",
-              "analyse", "factor", "solve", "ratio");
+  std::printf("%-34s %9s %6s %9s %4s %7s %3s %8s %6s | %7s %6s %6s %6s | %4s %8s %6s %6s\n", "mesh", "faces", "levels",
+              "coarse it", "it", "d_area", "inv", "whole s", "GiB", "levels", "read", "init", "write", "it", "plain s",
+              "GiB", "ratio");
   nlohmann::ordered_json all = nlohmann::ordered_json::array();
   for(const std::string& spec_text : specs) {
     dlf_benchmark::Mesh_spec spec;
@@ -231,10 +283,10 @@ int main(int argc, char** argv)
     }
     dlf_benchmark::subdivide(mesh, spec);
     const std::string stem = (std::filesystem::path(work) / spec_text).string();
-    const std::string off = stem + ".off", obj = stem + ".obj", report = stem + ".json";
+    const std::string off = stem + ".off";
     // A mesh already there (from an earlier run) is used and kept; one
     // written here is removed once measured, as are the outputs.
-    const bool written = !floor_only && !std::filesystem::exists(off);
+    const bool written = !std::filesystem::exists(off);
     if(written && !CGAL::IO::write_polygon_mesh(off, mesh, CGAL::parameters::stream_precision(17))) {
       std::cerr << "large_meshes: cannot write " << off << "\n";
       return 2;
@@ -242,50 +294,29 @@ int main(int argc, char** argv)
     nlohmann::ordered_json row;
     row["mesh"] = spec_text;
     row["faces"] = num_faces(mesh);
-    Process_run run;
-    nlohmann::json R;
-    if(!floor_only) {
-      run = run_process({ dlf_path, "disk", off, "-o", obj, "--report", report, "--history" });
-      std::ifstream in(report);
-      if(in) R = nlohmann::json::parse(in, nullptr, false);
-    }
+    row["default"] = run_row(run_dlf(dlf_path, off, stem, {}));
+    if(plain) row["plain"] = run_row(run_dlf(dlf_path, off, stem + ".plain", { "--coarse-to-fine-faces", "0" }));
     std::error_code ignored;
-    std::filesystem::remove(obj, ignored);
-    std::filesystem::remove(report, ignored);
     if(written) std::filesystem::remove(off, ignored);
-    const Floor f = measure_floor(mesh);
-    mesh.clear();
-    double per_iteration = 0, setup = 0;
-    if(R.is_object() && R.contains("seconds")) {
-      // Per iteration: the iterations after the first (which includes the
-      // solver's symbolic analysis), from the history's elapsed times.
-      const nlohmann::json& h = R["history"];
-      const std::size_t k = h.is_array() ? h.size() : 0;
-      if(k >= 2) per_iteration = (h[k - 1]["seconds"].get<double>() - h[0]["seconds"].get<double>()) / double(k - 1);
-      const double iterations = k ? h[k - 1]["seconds"].get<double>() : 0;
-      setup = R["seconds"]["flow"].get<double>() - iterations;
-      row["iterations"] = R["iterations"];
-      row["d_area"] = R["final"]["d_area"];
-      row["inverted"] = R["final"]["inverted_faces"];
-      row["seconds"] = R["seconds"];
+    if(floor) {
+      const Floor f = measure_floor(mesh);
+      row["floor"] = { { "unknowns", f.unknowns }, { "analyse", f.analyse }, { "factorize", f.factorize }, { "solve", f.solve } };
     }
-    const double floor_seconds = f.factorize + f.solve;
-    row["whole_process_seconds"] = run.seconds;
-    row["exit_code"] = run.exit_code;
-    row["max_rss_gib"] = run.max_rss_gib;
-    row["flow_setup_seconds"] = setup;
-    row["seconds_per_iteration"] = per_iteration;
-    row["floor"] = { { "unknowns", f.unknowns }, { "analyse", f.analyse },
-                     { "factorize", f.factorize }, { "solve", f.solve } };
-    row["ratio"] = floor_seconds > 0 ? per_iteration / floor_seconds : 0.;
+    mesh.clear();
+    const nlohmann::ordered_json& d = row["default"];
+    const nlohmann::json levels = d.value("levels", nlohmann::json::array());
+    double level_seconds = seconds_of(d, "levels");
+    for(const auto& l : levels) level_seconds += l["seconds"].get<double>();
+    const double plain_seconds = plain ? row["plain"]["whole_process_seconds"].get<double>() : 0.;
+    row["ratio_to_plain"] = plain_seconds > 0 ? d["whole_process_seconds"].get<double>() / plain_seconds : 0.;
     all.push_back(row);
-    const auto sec = [&](const char* k) { return R.is_object() && R["seconds"].contains(k) ? R["seconds"][k].get<double>() : 0.; };
-    const double other = run.seconds - sec("read") - sec("check") - sec("total") - sec("write");
-    std::printf("%-30s %9zu %4d %7.4f %8.2f %6.2f | %6.2f %6.2f %6.2f %6.2f %7.3f %6.2f %6.2f | %8zu %7.3f %7.3f %7.3f | %5.2f\n",
-                spec_text.c_str(), std::size_t(row["faces"]), R.is_object() ? R.value("iterations", 0) : 0,
-                R.is_object() && R["final"].is_object() ? R["final"]["d_area"].get<double>() : 0., run.seconds,
-                run.max_rss_gib, sec("read"), sec("check"), sec("initial"), setup, per_iteration, sec("write"), other,
-                f.unknowns, f.analyse, f.factorize, f.solve, floor_seconds > 0 ? per_iteration / floor_seconds : 0.);
+    std::printf("%-34s %9zu %6zu %9d %4d %7.4f %3d %8.2f %6.2f | %7.2f %6.2f %6.2f %6.2f | %4d %8.2f %6.2f %6.3f\n",
+                spec_text.c_str(), std::size_t(row["faces"]), levels.size(),
+                levels.empty() ? 0 : levels.front()["iterations"].get<int>(), d.value("iterations", 0),
+                d.value("d_area", 0.), d.value("inverted", 0), d["whole_process_seconds"].get<double>(),
+                d["max_rss_gib"].get<double>(), level_seconds, seconds_of(d, "read"), seconds_of(d, "initial"),
+                seconds_of(d, "write"), plain ? row["plain"].value("iterations", 0) : 0, plain_seconds,
+                plain ? row["plain"]["max_rss_gib"].get<double>() : 0., row["ratio_to_plain"].get<double>());
     std::fflush(stdout);
   }
   std::cout << "load " << dlf_benchmark::loadavg() << "\n";

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# Large meshes against the solver's floor (doc/large_meshes.md): the default
-# `dlf disk` on lion-head and mannequin-devil subdivided 1 to 4 times by Loop
-# (66K to 6.6M faces), whole process and its split, beside one factorization
-# and one solve of the interior stiffness of the same mesh.
+# Large meshes (doc/large_meshes.md): the default `dlf disk` (coarse to fine)
+# on lion-head and mannequin-devil subdivided 2 to 4 times by Loop (267K to
+# 6.6M faces), and on the same meshes scrambled (edges flipped, vertices
+# moved: no longer subdivisions), whole process and its split, beside the
+# plain flow (--coarse-to-fine-faces 0) on the same mesh in the same run.
 #
-#   benchmark/large_meshes.sh                  # all sizes (about half an hour on 2 cores)
+#   benchmark/large_meshes.sh                  # all sizes (about 20 minutes on 2 cores)
 #   benchmark/large_meshes.sh SPEC...          # some, e.g. mannequin-devil.off+loop2
 #
 # DLF (default build/tools/dlf), BENCH (default build/benchmark/large_meshes),
@@ -24,8 +25,9 @@ if [[ -z "${WORK:-}" ]]; then
 fi
 specs=("$@")
 if [[ ${#specs[@]} -eq 0 ]]; then
-  specs=(lion-head.off+loop1 lion-head.off+loop2 lion-head.off+loop3 lion-head.off+loop4
-         mannequin-devil.off+loop1 mannequin-devil.off+loop2 mannequin-devil.off+loop3 mannequin-devil.off+loop4)
+  specs=(lion-head.off+loop2 lion-head.off+loop3
+         mannequin-devil.off+loop2 mannequin-devil.off+loop3 mannequin-devil.off+loop4
+         mannequin-devil.off+loop2+scramble mannequin-devil.off+loop3+scramble mannequin-devil.off+loop4+scramble)
 fi
 args=(--dlf "$DLF" --data-dir "$DATA" --work "$WORK")
 [[ -n "${JSON:-}" ]] && args+=(--json "$JSON")

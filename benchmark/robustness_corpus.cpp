@@ -590,8 +590,13 @@ json run_api(int variant, const std::string& file)
   SMP::Discrete_lie_flow_parameterizer_3<SM, Spoiled_tutte> dlf(init);
   // The rounding-level sliver only matters once the flow pushes it; run to the plateau.
   if(variant == 6) dlf.options().tolerance = 0;
-  const SMP::Error_code e = SMP::parameterize(sm, dlf, bhd, uv);
+  // CGAL's entry point returns CGAL's nearest code; the report holds the precise one.
+  const SMP::Error_code cgal = SMP::parameterize(sm, dlf, bhd, uv);
   const SMP::Discrete_lie_flow_report& R = dlf.report();
+  const SMP::Error_code e = R.status;
+  if(cgal != SMP::discrete_lie_flow_cgal_error_code(e)) // a broken promise: the runner's error
+    throw std::runtime_error("parameterize() returned " + std::to_string(int(cgal)) + ", the report's status is " +
+                             SMP::discrete_lie_flow_error_name(e));
   json r = { { "status", SMP::discrete_lie_flow_error_name(e) }, { "message", R.message },
              { "rejected_by_exact_check", R.rejected_by_exact_check }, { "iterations", R.iterations } };
   if(e == SMP::OK) {

@@ -694,6 +694,21 @@ seam_case blob blob.off blob.selection.txt
 # bear.selection.txt has no edges: its line 1 (3 cones) is joined by shortest paths
 seam_case bear bear.off bear.selection.txt
 check "--seam bear: the cones were joined" equals "$(json_get seam_bear.json seam joined_vertices)" 3
+# --- coarse to fine (the threshold lowered to reach the data set), on a seam --
+"$DLF" disk "$MESHES/bear.off" --seam "$SEAMDATA/bear.selection.txt" --coarse-to-fine-faces 1000 -o c2f.obj \
+  --report c2f.json > c2f.out
+check "coarse to fine on bear's seam: exit 0, converged" equals "$? $(json_get c2f.json "" stop_reason)" "0 converged"
+check "coarse to fine: the report's levels grow to the mesh, the coarsest flowed, none refused" python3 -c "
+import json; r = json.load(open('c2f.json')); L = r['levels']
+assert len(L) >= 2 and L[-1]['faces'] == r['faces'] and L[0]['iterations'] > 0, L
+assert all(a['faces'] < b['faces'] for a, b in zip(L, L[1:])) and r['levels_refused'] is None, r['levels_refused']"
+check "coarse to fine: the summary names the levels" grep -q "coarse to fine: " c2f.out
+"$DLF" score c2f.obj --report c2f_score.json -q
+check "coarse to fine: 0 inverted faces and d_area <= 2.01 in the OBJ" equals \
+  "$(json_get c2f_score.json metrics inverted_faces) $(python3 -c "import json; print(json.load(open('c2f_score.json'))['metrics']['d_area'] <= 2.01)")" "0 True"
+"$DLF" disk "$MESHES/bear.off" --seam "$SEAMDATA/bear.selection.txt" --coarse-to-fine-faces 0 --report plain.json -q
+check "--coarse-to-fine-faces 0: the flow on the mesh alone, no levels" equals \
+  "$(python3 -c "import json; r = json.load(open('plain.json')); print(len(r['levels']), r['levels_refused'])")" "0 None"
 "$DLF" disk "$MESHES/blob.off" --seam "$SEAMDATA/blob.selection.txt" --init lscm --mode paper --report seam_lscm.json -q
 check "--seam with --init lscm --mode paper: exit code and status agree (0 ok, or 3 not_converged)" bash -c \
   "case '$? $(json_get seam_lscm.json "" status)' in '0 ok'|'3 not_converged') exit 0;; *) exit 1;; esac"
@@ -814,7 +829,8 @@ check "volume -v: a line per flow iteration, as many as reported" equals \
 check "volume --cholesky-every 1: converged, one conjugate-gradient step per iteration (the factorisation is the matrix solved)" \
   equals "$(json_get vol_chol.json "" stop_reason) $(json_get vol_chol.json counters cg_iterations)" \
   "converged $(json_get vol_chol.json "" iterations)"
-"$DLF" volume vol_sphere.mesh --max-iterations 2 --report vol_cap.json -q 2> vol_cap.err
+# A tolerance no two iterations reach (the ball takes 1 to 3 iterations to D_vol 2.01).
+"$DLF" volume vol_sphere.mesh --max-iterations 2 --tolerance 1e-9 --report vol_cap.json -q 2> vol_cap.err
 check "volume stopped after 2 iterations: exit 3 and status not_converged, as disk and sphere" equals \
   "$? $(json_get vol_cap.json "" status) $(json_get vol_cap.json "" stop_reason)" "3 not_converged iteration_cap"
 "$DLF" volume vol_sphere.mesh --mode paper -o vol_paper.mesh --report vol_paper.json -q

@@ -21,6 +21,7 @@
 #include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Two_vertices_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Given_uv_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Square_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
@@ -945,6 +946,262 @@ TEST(Certified_cut_disk, CowCutThroughSixTips)
   const Flow_run r = run_dlf<Circle_dlf>(sm, Circle_init(), certified_options());
   expect_certified_run(r, Border_shape::CIRCLE);
   EXPECT_LE(r.report.iterations, 200u);
+}
+
+
+// ---------------------------------------------------------------------------
+// Coarse to fine (disk/disk_hierarchy.h, disk/coarse_to_fine.h): the levels
+// checked against their definition, then runs through the public class
+// with the threshold lowered so that the data set's disks take that path.
+// ---------------------------------------------------------------------------
+
+namespace D = SMP::internal::dlf;
+
+/// The edges of `faces` with the number of faces on each.
+std::map<std::pair<int, int>, int> edge_faces(const std::vector<Tri>& faces)
+{
+  std::map<std::pair<int, int>, int> e;
+  for(const Tri& t : faces)
+    for(int k = 0; k < 3; ++k) ++e[std::minmax(t[k], t[(k + 1) % 3])];
+  return e;
+}
+
+// Each level of mannequin-devil's hierarchy: a manifold disk (χ = 1, every
+// edge on one or two faces) with the caller's border edges as its border and
+// no face with its three corners on it (whose area the flow can hardly reach),
+// the whole target area, no border vertex and no two neighbours removed,
+// every face positive in the start (CGAL's predicate); the start's own
+// positions carried down give every finer face positive again.
+TEST(Coarse_to_fine, LevelsKeepTheDiskTheTargetsAndTheStart)
+{
+  SM sm;
+  ASSERT_TRUE(read_mesh("mannequin-devil", sm));
+  const SM_halfedge bhd = first_border_halfedge(sm);
+  const Mesh_data m = extract(sm, bhd);
+  std::vector<V2> uv = initial_map(sm, bhd, Circle_init());
+  ASSERT_EQ(uv.size(), m.xyz.size());
+  std::vector<Tri> faces = m.faces;
+  if(exact_signs(uv, faces).neg > 0) for(Tri& t : faces) std::swap(t[1], t[2]);
+  ASSERT_EQ(exact_signs(uv, faces).pos, faces.size());
+  std::vector<double> target;
+  long double total = 0;
+  for(const Tri& t : faces) { target.push_back(double(area_3(m.xyz[t[0]], m.xyz[t[1]], m.xyz[t[2]]))); total += target.back(); }
+  std::vector<char> fixed(m.xyz.size(), 0);
+  std::set<std::pair<int, int> > border_edges;
+  for(std::size_t k = 0; k < m.border.size(); ++k) {
+    fixed[std::size_t(m.border[k])] = 1;
+    border_edges.insert(std::minmax(m.border[k], m.border[(k + 1) % m.border.size()]));
+  }
+  const auto on_border_only = [&fixed](const std::vector<Tri>& F) {
+    return std::count_if(F.begin(), F.end(), [&fixed](const Tri& t) {
+      return fixed[std::size_t(t[0])] && fixed[std::size_t(t[1])] && fixed[std::size_t(t[2])];
+    });
+  };
+  std::vector<D::Disk_level> levels;
+  while(faces.size() > 2000) {
+    D::Disk_level L;
+    const std::size_t removed = D::coarsen_disk_level(m.xyz.size(), faces, target, uv, m.xyz, fixed, L);
+    ASSERT_GT(removed, faces.size() / 20) << "a level removed few vertices";
+    const std::string at = "level of " + std::to_string(L.faces.size()) + " faces: ";
+    // The removed vertices.
+    const std::map<std::pair<int, int>, int> fine_edges = edge_faces(faces);
+    std::set<int> gone(L.from_above.removed.begin(), L.from_above.removed.end());
+    ASSERT_EQ(gone.size(), removed);
+    for(int v : gone) EXPECT_FALSE(fixed[std::size_t(v)]) << at << "border vertex " << v << " removed";
+    for(const auto& e : fine_edges) EXPECT_FALSE(gone.count(e.first.first) && gone.count(e.first.second)) << at << "neighbours removed";
+    for(const Tri& t : L.faces) for(int v : t) ASSERT_EQ(gone.count(v), 0u) << at << "a removed vertex is still used";
+    // A manifold disk with the same border.
+    const std::map<std::pair<int, int>, int> e = edge_faces(L.faces);
+    std::set<int> used;
+    for(const Tri& t : L.faces) used.insert(t.begin(), t.end());
+    EXPECT_EQ(long(used.size()) - long(e.size()) + long(L.faces.size()), 1) << at << "not a disk";
+    std::set<std::pair<int, int> > border;
+    for(const auto& x : e) {
+      EXPECT_LE(x.second, 2) << at << "edge " << x.first.first << "-" << x.first.second << " on " << x.second << " faces";
+      if(x.second == 1) border.insert(x.first);
+    }
+    EXPECT_TRUE(border == border_edges) << at << "the border changed";
+    EXPECT_EQ(on_border_only(L.faces), on_border_only(m.faces)) << at << "a collapse made a face with its three corners on the border";
+    // The targets, all of them; the faces, positive in the start.
+    long double sum = 0;
+    for(double a : L.target) { EXPECT_GT(a, 0); sum += a; }
+    EXPECT_NEAR(double(sum / total), 1.0, 1e-12) << at << "target area lost";
+    EXPECT_EQ(exact_signs(uv, L.faces).pos, L.faces.size()) << at << "a face of the start is not positive";
+    // Carried down from the start's own positions.
+    std::vector<V2> fine = uv;
+    for(int v : gone) fine[std::size_t(v)] = V2{{ 0, 0 }};
+    ASSERT_TRUE(D::prolong_disk_level(L.from_above, uv, fine)) << at;
+    EXPECT_EQ(exact_signs(fine, faces).pos, faces.size()) << at << "a face carried down is not positive";
+    faces = L.faces;
+    target = L.target;
+    levels.push_back(std::move(L));
+  }
+  EXPECT_GE(levels.size(), 5u);
+}
+
+/// Options that send a disk of the data set through the coarse levels.
+SMP::Discrete_lie_flow_options coarse_to_fine_options(std::size_t faces = 2000)
+{
+  SMP::Discrete_lie_flow_options o = certified_options();
+  o.disk.coarse_to_fine_faces = faces;
+  return o;
+}
+
+/// The levels a run reports: coarsest first, growing to the caller's mesh,
+/// the coarsest flowed, each carried down to a D_area the flow then took on.
+void expect_levels(const Flow_run& r)
+{
+  const auto& L = r.report.levels;
+  ASSERT_GE(L.size(), 2u) << "no coarse levels: " << r.report.levels_refused;
+  EXPECT_TRUE(r.report.levels_refused.empty()) << r.report.levels_refused;
+  EXPECT_GT(L.front().iterations, 0u);
+  for(std::size_t k = 1; k < L.size(); ++k) {
+    EXPECT_GT(L[k].faces, L[k - 1].faces);
+    EXPECT_GT(L[k].vertices, L[k - 1].vertices);
+    EXPECT_EQ(L[k].iterations, 0u);
+    EXPECT_GE(L[k].d_area, 2.0);
+  }
+  EXPECT_EQ(L.back().faces, r.mesh.faces.size());
+  EXPECT_EQ(L.back().vertices, r.mesh.xyz.size());
+  EXPECT_LE(r.report.final_d_area, L.back().d_area + 1e-12) << "the finest flow raised D_area";
+}
+
+class Coarse_to_fine_disk : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Coarse_to_fine_disk, Circle)
+{
+  SM sm;
+  ASSERT_TRUE(read_mesh(GetParam(), sm));
+  const Flow_run r = run_dlf<Circle_dlf>(sm, Circle_init(), coarse_to_fine_options());
+  expect_certified_run(r, Border_shape::CIRCLE);
+  expect_levels(r);
+}
+
+TEST_P(Coarse_to_fine_disk, Square)
+{
+  SM sm;
+  ASSERT_TRUE(read_mesh(GetParam(), sm));
+  Square_init init;
+  ASSERT_TRUE(library_square_init(sm, init));
+  const Flow_run r = run_dlf<Square_dlf>(sm, init, coarse_to_fine_options());
+  expect_certified_run(r, Border_shape::SQUARE);
+  expect_levels(r);
+}
+
+INSTANTIATE_TEST_SUITE_P(DataSet, Coarse_to_fine_disk, ::testing::Values("mannequin-devil", "lion-head", "cylinder_locally_refined"),
+                         test_name);
+
+// A free border (LSCM's) stays the polyline it was; the levels follow it.
+TEST(Coarse_to_fine, FreeBorder)
+{
+  SM sm;
+  ASSERT_TRUE(read_mesh("mushroom", sm));
+  const Flow_run r = run_dlf<SMP::Discrete_lie_flow_parameterizer_3<SM, Lscm_init> >(sm, Lscm_init(), coarse_to_fine_options(1000));
+  ASSERT_EQ(r.code, SMP::OK) << r.report.message;
+  EXPECT_EQ(r.report.border, SMP::Discrete_lie_flow_border::FREE);
+  EXPECT_TRUE(r.report.converged()) << r.report.message;
+  expect_on_border(r, Border_shape::FREE, r.mesh.faces);
+  expect_levels(r);
+}
+
+// A density: its regions' shares hold on the caller's faces although the
+// coarse levels ignore them (their targets carry the density).
+TEST(Coarse_to_fine, Density)
+{
+  SM sm;
+  ASSERT_TRUE(read_mesh("lion-head", sm));
+  SMP::Discrete_lie_flow_options o = coarse_to_fine_options();
+  double mid = 0;
+  for(SM_vertex v : vertices(sm)) mid += sm.point(v).x() / double(num_vertices(sm));
+  for(auto f : faces(sm)) o.face_density.push_back(sm.point(target(halfedge(f, sm), sm)).x() > mid ? 4.0 : 1.0);
+  const Flow_run r = run_dlf<Circle_dlf>(sm, Circle_init(), o);
+  ASSERT_EQ(r.code, SMP::OK) << r.report.message;
+  EXPECT_TRUE(r.report.converged()) << r.report.message;
+  EXPECT_EQ(r.report.caller_inverted_faces, 0u);
+  EXPECT_EQ(exact_signs(r.uv, r.mesh.faces).zero, 0u);
+  EXPECT_LE(r.report.final_share_error, o.certified.share_tolerance);
+  // The share of the dense half, recomputed: 4 A / (4 A + A') of the domain.
+  long double dense3 = 0, all3 = 0, dense2 = 0, all2 = 0;
+  std::size_t f = 0;
+  for(const Tri& t : r.mesh.faces) {
+    const long double a = area_3(r.mesh.xyz[t[0]], r.mesh.xyz[t[1]], r.mesh.xyz[t[2]]) * o.face_density[f];
+    const long double u = std::fabs(area_2(r.uv[t[0]], r.uv[t[1]], r.uv[t[2]]));
+    all3 += a; all2 += u;
+    if(o.face_density[f++] > 1) { dense3 += a; dense2 += u; }
+  }
+  EXPECT_NEAR(double(dense2 / all2), double(dense3 / all3), 0.005 * double(dense3 / all3));
+  expect_levels(r);
+}
+
+// The regions of the sweeps are fixed: one thread or two, the same map.
+TEST(Coarse_to_fine, SameMapOnOneAndTwoThreads)
+{
+  SM sm;
+  ASSERT_TRUE(read_mesh("mannequin-devil", sm));
+  SMP::Discrete_lie_flow_options o = coarse_to_fine_options();
+  o.disk.threads = 1;
+  const Flow_run one = run_dlf<Circle_dlf>(sm, Circle_init(), o);
+  o.disk.threads = 2;
+  const Flow_run two = run_dlf<Circle_dlf>(sm, Circle_init(), o);
+  ASSERT_EQ(one.code, SMP::OK);
+  ASSERT_EQ(two.code, SMP::OK);
+  EXPECT_TRUE(one.uv == two.uv) << "the map depends on the number of threads";
+  ASSERT_EQ(one.report.levels.size(), two.report.levels.size());
+  for(std::size_t k = 0; k < one.report.levels.size(); ++k) EXPECT_EQ(one.report.levels[k].d_area, two.report.levels[k].d_area);
+}
+
+/// A flat n × n grid of the unit square with its vertices moved off the
+/// lattice (deterministically), and its own coordinates as the map.
+SM flat_grid(int n)
+{
+  SM sm;
+  std::vector<SM_vertex> v;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i) {
+      const bool inner = i > 0 && j > 0 && i < n && j < n;
+      const double dx = inner ? 0.2 * std::sin(7.0 * i + 3.0 * j) / n : 0, dy = inner ? 0.2 * std::cos(5.0 * i - 2.0 * j) / n : 0;
+      v.push_back(sm.add_vertex(K::Point_3(double(i) / n + dx, double(j) / n + dy, 0)));
+    }
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      const SM_vertex a = v[std::size_t(j * (n + 1) + i)], b = v[std::size_t(j * (n + 1) + i + 1)];
+      const SM_vertex c = v[std::size_t((j + 1) * (n + 1) + i + 1)], d = v[std::size_t((j + 1) * (n + 1) + i)];
+      sm.add_face(a, b, c);
+      sm.add_face(a, c, d);
+    }
+  return sm;
+}
+
+// A start already at D_area 2 (a flat mesh mapped by its own coordinates):
+// no map carried down is as good, so the start stays, and the run says why.
+TEST(Coarse_to_fine, RefusedWhenTheStartIsBetter)
+{
+  SM sm = flat_grid(30);
+  typedef SM::Property_map<SM_vertex, K::Point_2> Given_map;
+  Given_map given = sm.add_property_map<SM_vertex, K::Point_2>("v:given").first;
+  for(SM_vertex v : vertices(sm)) given[v] = K::Point_2(sm.point(v).x(), sm.point(v).y());
+  typedef SMP::Given_uv_parameterizer_3<SM, Given_map> Given;
+  const Flow_run r = run_dlf<SMP::Discrete_lie_flow_parameterizer_3<SM, Given> >(sm, Given(given), coarse_to_fine_options(200));
+  ASSERT_EQ(r.code, SMP::OK) << r.report.message;
+  EXPECT_TRUE(r.report.levels.empty());
+  EXPECT_NE(r.report.levels_refused.find("above the start's"), std::string::npos) << r.report.levels_refused;
+  EXPECT_EQ(r.report.iterations, 0u);
+  EXPECT_TRUE(r.uv == r.uv0) << "the start was not kept";
+}
+
+// A wheel: its one interior vertex cannot go without joining two border
+// vertices; the flow runs on the mesh itself.
+TEST(Coarse_to_fine, RefusedWhenNoVertexCanGo)
+{
+  SM sm;
+  const SM_vertex c = sm.add_vertex(K::Point_3(0, 0, 0.3));
+  std::vector<SM_vertex> rim;
+  for(int k = 0; k < 12; ++k) rim.push_back(sm.add_vertex(K::Point_3(std::cos(k * CGAL_PI / 6) * (1 + 0.3 * (k % 3)), std::sin(k * CGAL_PI / 6), 0)));
+  for(int k = 0; k < 12; ++k) sm.add_face(c, rim[std::size_t(k)], rim[std::size_t((k + 1) % 12)]);
+  const Flow_run r = run_dlf<Circle_dlf>(sm, Circle_init(), coarse_to_fine_options(1));
+  expect_certified_run(r, Border_shape::CIRCLE);
+  EXPECT_TRUE(r.report.levels.empty());
+  EXPECT_EQ(r.report.levels_refused, "no interior vertex could be removed");
 }
 
 } // namespace

@@ -590,6 +590,8 @@ void expect_holes_run(SM& sm, SM_halfedge bhd, std::size_t max_iterations, const
   EXPECT_NEAR(R.final_d_area, d_area(m), 1e-9);
   EXPECT_NEAR(R.final_metrics.d_area, d.d_area, 1e-9);
   for(const auto& t : p.domain_triangles()) for(SM_vertex v : t) EXPECT_TRUE(sm.is_valid(v));
+  if(opt.disk.coarse_to_fine_faces > 0 && num_faces(sm) >= opt.disk.coarse_to_fine_faces)
+    EXPECT_GE(R.levels.size(), 2u) << "no coarse levels: " << R.levels_refused;
 }
 
 TEST(Holes, AnnulusGrid)
@@ -644,6 +646,18 @@ TEST(Holes, CgalMeshesWithHoles)
     ASSERT_TRUE(read_sm(name, sm)) << name;
     ASSERT_GT(border_loops(sm).size(), 1u) << name;
     expect_holes_run(sm, longest_loop(sm), 200, name);
+  }
+}
+
+// The holes' fill flows through the coarse levels with the caller's faces.
+TEST(Holes, CoarseToFine)
+{
+  SMP::Discrete_lie_flow_options opt;
+  opt.disk.coarse_to_fine_faces = 1000;
+  for(const char* name : { "lion", "holes", "blade" }) {
+    SM sm;
+    ASSERT_TRUE(read_sm(name, sm)) << name;
+    expect_holes_run(sm, longest_loop(sm), 200, std::string(name) + ", coarse to fine", true, opt);
   }
 }
 

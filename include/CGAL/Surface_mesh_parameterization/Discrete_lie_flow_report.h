@@ -65,8 +65,8 @@ struct Discrete_lie_flow_map_difference
 /// (`Discrete_lie_flow_report::levels`, coarsest first).
 struct Discrete_lie_flow_level
 {
-  std::size_t vertices = 0;   ///< vertices of the level
-  std::size_t faces = 0;      ///< faces of the level
+  std::size_t vertices = 0;   ///< vertices of the level (with holes: their fill's too)
+  std::size_t faces = 0;      ///< faces of the level (with holes: their fill's too)
   std::size_t iterations = 0; ///< flow iterations on the level (0: the map carried down and swept vertex by vertex)
   double d_area = 0;          ///< D_area of the level's map (its own targets) after its work
   double seconds = 0;         ///< the level's work: its flow, or the map carried down and swept

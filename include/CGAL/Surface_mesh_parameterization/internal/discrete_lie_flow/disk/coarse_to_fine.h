@@ -196,8 +196,7 @@ bool coarse_to_fine_start(const Disk_problem& P, std::vector<Vec2>& uv, Boundary
   for(int b : P.boundary) fixed[std::size_t(b)] = 1;
   std::vector<Disk_level> levels = build_disk_levels(P, uv, fixed, coarsest, s);
   R.seconds_levels = since(t);
-  if(levels.empty())
-    return refuse(P.faces.size() <= coarsest ? "the mesh is no larger than the coarsest level" : "no interior vertex could be removed");
+  if(levels.empty()) return refuse("no interior vertex could be removed");
 
   t = Clock::now();
   std::vector<Vec2> fine(uv);
