@@ -303,20 +303,24 @@ int main(int argc, char** argv)
       row["floor"] = { { "unknowns", f.unknowns }, { "analyse", f.analyse }, { "factorize", f.factorize }, { "solve", f.solve } };
     }
     mesh.clear();
-    const nlohmann::ordered_json& d = row["default"];
-    const nlohmann::json levels = d.value("levels", nlohmann::json::array());
+    // Copies: an ordered_json object is a vector, and the ratio added below moves it.
+    const nlohmann::ordered_json d = row["default"];
+    const auto num = [](const nlohmann::ordered_json& j, const char* key) {
+      return j.contains(key) && j[key].is_number() ? j[key].get<double>() : 0.;
+    };
+    const nlohmann::ordered_json levels = d.contains("levels") ? d["levels"] : nlohmann::ordered_json::array();
     double level_seconds = seconds_of(d, "levels");
-    for(const auto& l : levels) level_seconds += l["seconds"].get<double>();
-    const double plain_seconds = plain ? row["plain"]["whole_process_seconds"].get<double>() : 0.;
-    row["ratio_to_plain"] = plain_seconds > 0 ? d["whole_process_seconds"].get<double>() / plain_seconds : 0.;
+    for(const auto& l : levels) level_seconds += num(l, "seconds");
+    const nlohmann::ordered_json none = nlohmann::ordered_json::object();
+    const nlohmann::ordered_json p = plain ? row["plain"] : none;
+    const double plain_seconds = num(p, "whole_process_seconds");
+    row["ratio_to_plain"] = plain_seconds > 0 ? num(d, "whole_process_seconds") / plain_seconds : 0.;
     all.push_back(row);
     std::printf("%-34s %9zu %6zu %9d %4d %7.4f %3d %8.2f %6.2f | %7.2f %6.2f %6.2f %6.2f | %4d %8.2f %6.2f %6.3f\n",
-                spec_text.c_str(), std::size_t(row["faces"]), levels.size(),
-                levels.empty() ? 0 : levels.front()["iterations"].get<int>(), d.value("iterations", 0),
-                d.value("d_area", 0.), d.value("inverted", 0), d["whole_process_seconds"].get<double>(),
-                d["max_rss_gib"].get<double>(), level_seconds, seconds_of(d, "read"), seconds_of(d, "initial"),
-                seconds_of(d, "write"), plain ? row["plain"].value("iterations", 0) : 0, plain_seconds,
-                plain ? row["plain"]["max_rss_gib"].get<double>() : 0., row["ratio_to_plain"].get<double>());
+                spec_text.c_str(), std::size_t(row["faces"]), levels.size(), levels.empty() ? 0 : int(num(levels.front(), "iterations")),
+                int(num(d, "iterations")), num(d, "d_area"), int(num(d, "inverted")), num(d, "whole_process_seconds"),
+                num(d, "max_rss_gib"), level_seconds, seconds_of(d, "read"), seconds_of(d, "initial"), seconds_of(d, "write"),
+                int(num(p, "iterations")), plain_seconds, num(p, "max_rss_gib"), num(row, "ratio_to_plain"));
     std::fflush(stdout);
   }
   std::cout << "load " << dlf_benchmark::loadavg() << "\n";
