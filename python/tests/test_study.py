@@ -593,3 +593,19 @@ def test_memory_limit(tmp_path):
     assert code == 1 and sig is None and not timed_out and "MemoryError" in err
     code, _, err, _, _ = study._run_tool([sys.executable, "-c", "bytearray(100 << 20)"], 60, str(tmp_path), 4)
     assert code == 0, err
+
+
+def test_build_tree_script_is_not_shadowed_by_the_sources():
+    """<build>/python/dlf-study imports the built package even when the
+    source folder python/ (the same package without its compiled module)
+    comes first on the path, as it does when run from a checkout, and with
+    PYTHONSAFEPATH set (the script's own folder then is not on the path)."""
+    build_python = Path(study.__file__).resolve().parent.parent
+    script = build_python / "dlf-study"
+    assert script.is_file() and os.access(script, os.X_OK), script
+    sources = Path(__file__).resolve().parent.parent
+    assert (sources / "discrete_lie_flow" / "__init__.py").is_file()
+    env = dict(os.environ, PYTHONPATH=str(sources), PYTHONSAFEPATH="1")
+    p = subprocess.run([str(script), "configs"], cwd=str(sources), env=env, capture_output=True, text=True, timeout=120)
+    assert p.returncode == 0, p.stderr
+    assert "disk-square" in p.stdout, p.stdout
