@@ -146,7 +146,7 @@ struct Always_false : std::false_type {};
 ///
 /// The class `Discrete_lie_flow_parameterizer_3` computes an area-preserving
 /// (or density-prescribed) parameterization of a disk-topology triangle mesh
-/// by the Discrete Lie Flow of Kehua Su, Chencheng Li, Shifan Zhao, Na Lei and
+/// by the Discrete Lie Flow of Kehua Su, Chenchen Li, Shifan Zhao, Na Lei and
 /// Xianfeng Gu, "Discrete Lie flow: A measure controllable parameterization
 /// method", Computer Aided Geometric Design 72 (2019) 49–68
 /// (\ref DLFBibSu2019 "Su et al. 2019"): starting from any flip-free

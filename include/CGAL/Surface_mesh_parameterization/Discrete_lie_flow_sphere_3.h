@@ -37,7 +37,7 @@ namespace Surface_mesh_parameterization {
 ///
 /// Area-preserving (or density-prescribed) map of a closed genus-0 triangle
 /// mesh onto the unit sphere by the Discrete Lie Flow on the sphere (Kehua
-/// Su, Chencheng Li, Shifan Zhao, Na Lei and Xianfeng Gu, "Discrete Lie flow:
+/// Su, Chenchen Li, Shifan Zhao, Na Lei and Xianfeng Gu, "Discrete Lie flow:
 /// A measure controllable parameterization method", Computer Aided Geometric
 /// Design 72 (2019) 49–68; \ref DLFBibSu2019 "Su et al. 2019").
 ///

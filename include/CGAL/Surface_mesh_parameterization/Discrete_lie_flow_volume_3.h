@@ -182,7 +182,7 @@ inline Volume_flow_settings volume_flow_settings(const Discrete_lie_flow_volume_
 /// Volume-preserving (or density-prescribed) map of a tetrahedral mesh of a
 /// topological ball onto the unit ball, the volumetric Discrete Lie Flow:
 /// the paper (Su et al. 2019, \ref DLFBibSu2019) proves its flow in any
-/// dimension and leaves tetrahedral meshes as future work (§8).
+/// dimension and leaves tetrahedral meshes as future work (§7.2).
 ///
 /// The start is certified bijective: the border triangles go onto the unit
 /// sphere by `Discrete_lie_flow_sphere_parameterizer_3` (every spherical

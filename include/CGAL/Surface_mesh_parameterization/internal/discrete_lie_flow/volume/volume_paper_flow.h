@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The paper's flow on tetrahedral meshes, as far as its formulas reach in 3D
-// (its main theorem is dimension-free; its §8 leaves tet meshes as future
+// (its main theorem is dimension-free; its §7.2 leaves tet meshes as future
 // work), as a policy of the flow driver: volume elements lumped at the
 // vertices, the Poisson solve L h = V_Ω − V_M with the P1 stiffness of the
 // current ball-side tets, volume-weighted vertex gradients of h (tangential
