@@ -207,11 +207,13 @@ void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh
            "its holes filled\n";
   }
   if(!R.levels.empty()) {
+    double seconds = R.seconds_levels;
     out << "  coarse to fine:";
-    for(std::size_t k = 0; k + 1 < R.levels.size(); ++k)
-      out << (k ? ", " : " ") << R.levels[k].faces << " faces " << R.levels[k].iterations << " it";
-    out << "; start d_area " << R.levels.back().d_area << " (levels " << std::setprecision(3)
-        << R.seconds_levels + [&] { double t = 0; for(const auto& l : R.levels) t += l.seconds; return t; }() << " s)\n"
+    for(std::size_t k = 0; k < R.levels.size(); ++k) {
+      seconds += R.levels[k].seconds;
+      if(k + 1 < R.levels.size()) out << (k ? ", " : " ") << R.levels[k].faces << " faces " << R.levels[k].iterations << " it";
+    }
+    out << "; start d_area " << R.levels.back().d_area << " (levels " << std::setprecision(3) << seconds << " s)\n"
         << std::setprecision(8);
   } else if(!R.levels_refused.empty()) {
     out << "  coarse to fine refused (" << R.levels_refused << "): the flow ran from the start\n";

@@ -588,9 +588,7 @@ private:
     namespace D = internal::dlf;
     if(!D::circle_border_by_arc_length(P, uv)) return ERROR_BORDER_TOO_SHORT;
     // Coarse to fine, the caller's mesh is factorized for this start alone.
-    const std::size_t levels_from = m_options.disk.coarse_to_fine_faces;
-    if(m_options.fixed_step == 0 && levels_from > 0 && P.faces.size() >= levels_from)
-      D::use_amd_ordering(m_solver_traits.solver());
+    if(D::flows_coarse_to_fine(m_options, P.faces.size())) D::use_amd_ordering(m_solver_traits.solver());
     tutte.reset(new D::Tutte_interior_system<EigenSolver>(P, uv.size(), m_solver_traits.solver()));
     if(tutte->unknowns() > 0 && !tutte->factorized()) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
     return tutte->solve(uv) ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;

@@ -50,9 +50,9 @@ struct Coarse_to_fine_settings
   /// map carried down loses some of it to the finer faces.
   double coarse_tolerance_share = 0.5;
   /// Vertex sweeps on each finer level: first over the vertices put back,
-  /// then over all until D_area is within the coarsest level's tolerance
-  /// (on the caller's mesh: within `finest_goal_share` of the caller's, so
-  /// that its flow has nothing left to do), or a sweep took off less than
+  /// then over all until D_area − 2 is within `level_goal_share` of the
+  /// caller's tolerance (on the caller's mesh: `finest_goal_share`, so that
+  /// its flow has nothing left to do), or a sweep took off less than
   /// `least_sweep_gain` of D_area − 2, or `most_sweeps` ran. A sweep costs a
   /// small fraction of an iteration of the flow (doc/coarse_to_fine.md).
   std::size_t put_back_sweeps = 2;
@@ -67,6 +67,13 @@ struct Coarse_to_fine_settings
   /// so that the map does not depend on the number of threads.
   std::size_t sweep_parts = 8;
 };
+
+/// Whether the certified flow on a disk of `faces` faces starts coarse to fine.
+inline bool flows_coarse_to_fine(const Discrete_lie_flow_options& opt, std::size_t faces)
+{
+  return opt.mode == Discrete_lie_flow_mode::CERTIFIED && opt.fixed_step == 0 && opt.disk.coarse_to_fine_faces > 0 &&
+         faces >= opt.disk.coarse_to_fine_faces;
+}
 
 /// The levels of `P` from the start `uv`, finest first, until one has at
 /// most `coarsest` faces or a level removes too few vertices.

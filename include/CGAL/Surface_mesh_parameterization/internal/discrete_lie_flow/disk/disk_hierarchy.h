@@ -83,6 +83,38 @@ inline bool level_has_edge(const Vertex_faces& around, const std::vector<Face>& 
   return false;
 }
 
+/// The faces of the level made by the collapses `v` → `into[v]` (−1: kept)
+/// of `out.from_above`: the faces with the target as a corner go; the
+/// others of the star keep their shape in the ring with v moved onto the
+/// target, and share out the targets of the two that went.
+inline void collapse_level_faces(const std::vector<Face>& faces, const std::vector<double>& target,
+                                 const std::vector<int>& into, Disk_level& out)
+{
+  const Disk_decimation& D = out.from_above;
+  std::vector<double> dropped(into.size(), 0);
+  std::vector<int> owner;
+  out.faces.clear();
+  out.target.clear();
+  for(std::size_t f = 0; f < faces.size(); ++f) {
+    Face t = faces[f];
+    int corner = -1;
+    for(int c = 0; c < 3; ++c) if(into[std::size_t(t[c])] >= 0) corner = c;
+    if(corner < 0) { out.faces.push_back(t); out.target.push_back(target[f]); owner.push_back(-1); continue; }
+    const int v = t[corner], w = into[std::size_t(v)];
+    if(t[0] == w || t[1] == w || t[2] == w) { dropped[std::size_t(v)] += target[f]; continue; }
+    t[corner] = w;
+    out.faces.push_back(t);
+    out.target.push_back(target[f]);
+    owner.push_back(v);
+  }
+  for(std::size_t r = 0; r < D.removed.size(); ++r) {
+    const std::size_t v = std::size_t(D.removed[r]);
+    dropped[v] /= double(D.ring_first[r + 1] - D.ring_first[r] - 2); // the faces left of its star
+  }
+  for(std::size_t f = 0; f < out.faces.size(); ++f)
+    if(owner[f] >= 0) out.target[f] += dropped[std::size_t(owner[f])];
+}
+
 /// Makes the next coarser level of (`faces`, `target`) on `n` vertices:
 /// removes an independent set of vertices without `fixed[v]` (the border),
 /// each by the collapse into a ring vertex that keeps the mesh a manifold
@@ -92,7 +124,7 @@ inline std::size_t coarsen_disk_level(std::size_t n, const std::vector<Face>& fa
                                       const std::vector<Vec2>& uv, const std::vector<Vec3>& xyz,
                                       const std::vector<char>& fixed, Disk_level& out)
 {
-  // Rings of 12 or more give fans of long thin triangles; most vertices have 6.
+  // Rings of more than 10 give fans of long thin triangles; most vertices have 6.
   const std::size_t most = 10;
   const Vertex_faces around(n, faces);
   std::vector<char> state(n, 0); // 1: in a removed vertex's ring (kept), 2: removed
@@ -144,31 +176,7 @@ inline std::size_t coarsen_disk_level(std::size_t n, const std::vector<Face>& fa
     D.ring.insert(D.ring.end(), ring.begin(), ring.end());
     D.ring_first.push_back(D.ring.size());
   }
-  // The faces with the target as a corner go; the others of the star keep
-  // their shape in the ring with v moved onto the target, and share out
-  // the targets of the two that went.
-  std::vector<double> dropped(n, 0);
-  std::vector<int> owner;
-  out.faces.clear();
-  out.target.clear();
-  for(std::size_t f = 0; f < faces.size(); ++f) {
-    Face t = faces[f];
-    int corner = -1;
-    for(int c = 0; c < 3; ++c) if(state[std::size_t(t[c])] == 2) corner = c;
-    if(corner < 0) { out.faces.push_back(t); out.target.push_back(target[f]); owner.push_back(-1); continue; }
-    const int v = t[corner], w = into[std::size_t(v)];
-    if(t[0] == w || t[1] == w || t[2] == w) { dropped[std::size_t(v)] += target[f]; continue; }
-    t[corner] = w;
-    out.faces.push_back(t);
-    out.target.push_back(target[f]);
-    owner.push_back(v);
-  }
-  for(std::size_t r = 0; r < D.removed.size(); ++r) {
-    const std::size_t v = std::size_t(D.removed[r]);
-    dropped[v] /= double(D.ring_first[r + 1] - D.ring_first[r] - 2); // the faces left of its star
-  }
-  for(std::size_t f = 0; f < out.faces.size(); ++f)
-    if(owner[f] >= 0) out.target[f] += dropped[std::size_t(owner[f])];
+  collapse_level_faces(faces, target, into, out);
   return D.removed.size();
 }
 
