@@ -24,6 +24,10 @@
 #include <string>
 #include <vector>
 
+// The tests compile in unity batches (DLF_UNITY_BUILD): each file keeps its
+// names in a namespace of its own.
+namespace dlf_test_area_elements {
+
 namespace {
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
@@ -163,3 +167,5 @@ TEST(Area_elements, SpherePropertiesOnSurfaceMesh)
 }
 
 } // namespace
+
+} // namespace dlf_test_area_elements

@@ -27,6 +27,10 @@
 #include <utility>
 #include <vector>
 
+// The tests compile in unity batches (DLF_UNITY_BUILD): each file keeps its
+// names in a namespace of its own.
+namespace dlf_test_atlas {
+
 namespace SMP = CGAL::Surface_mesh_parameterization;
 
 namespace {
@@ -340,3 +344,5 @@ TEST(Atlas, CutsLeaveOneDiskWithoutThreeBorderCornerTriangles)
 }
 
 } // namespace
+
+} // namespace dlf_test_atlas

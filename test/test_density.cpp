@@ -32,6 +32,10 @@
 #include <string>
 #include <vector>
 
+// The tests compile in unity batches (DLF_UNITY_BUILD): each file keeps its
+// names in a namespace of its own.
+namespace dlf_test_density {
+
 namespace SMP = CGAL::Surface_mesh_parameterization;
 
 namespace {
@@ -432,3 +436,5 @@ TEST(DensityErrors, InvalidVertexDensityIsRefused)
   EXPECT_EQ(int(r.code), int(SMP::ERROR_INVALID_DENSITY));
   EXPECT_NE(r.message.find("42"), std::string::npos) << r.message;
 }
+
+} // namespace dlf_test_density

@@ -38,6 +38,10 @@
 #include <utility>
 #include <vector>
 
+// The tests compile in unity batches (DLF_UNITY_BUILD): each file keeps its
+// names in a namespace of its own.
+namespace dlf_test_disk_flow {
+
 namespace SMP = CGAL::Surface_mesh_parameterization;
 
 namespace {
@@ -1205,3 +1209,5 @@ TEST(Coarse_to_fine, RefusedWhenNoVertexCanGo)
 }
 
 } // namespace
+
+} // namespace dlf_test_disk_flow

@@ -31,6 +31,10 @@
 #include <string>
 #include <vector>
 
+// The tests compile in unity batches (DLF_UNITY_BUILD): each file keeps its
+// names in a namespace of its own.
+namespace dlf_test_drop_in {
+
 namespace {
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
@@ -390,3 +394,5 @@ TEST(DropIn, HoleStartKeptOrCircleFallback)
 }
 
 } // namespace
+
+} // namespace dlf_test_drop_in

@@ -38,6 +38,10 @@
 #include <string>
 #include <vector>
 
+// The tests compile in unity batches (DLF_UNITY_BUILD): each file keeps its
+// names in a namespace of its own.
+namespace dlf_test_features {
+
 namespace SMP = CGAL::Surface_mesh_parameterization;
 
 namespace {
@@ -948,3 +952,5 @@ TEST(Features, GivenUvStartOnANonConvexDomain)
   EXPECT_EQ(SMP::parameterize(sm, folded, bhd, uv), SMP::ERROR_NO_1_TO_1_MAPPING);
   EXPECT_EQ(folded.report().status, SMP::ERROR_INITIAL_MAP_FOLDED);
 }
+
+} // namespace dlf_test_features

@@ -35,6 +35,10 @@
 #include <string>
 #include <vector>
 
+// The tests compile in unity batches (DLF_UNITY_BUILD): each file keeps its
+// names in a namespace of its own.
+namespace dlf_test_inputs {
+
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace D = CGAL::Surface_mesh_parameterization::internal::dlf;
 
@@ -996,3 +1000,5 @@ TEST(Options, IterationCapAndCallback)
 }
 
 } // namespace
+
+} // namespace dlf_test_inputs

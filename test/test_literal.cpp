@@ -22,6 +22,10 @@
 #include <random>
 #include <vector>
 
+// The tests compile in unity batches (DLF_UNITY_BUILD): each file keeps its
+// names in a namespace of its own.
+namespace dlf_test_literal {
+
 namespace {
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
@@ -247,3 +251,5 @@ TEST(Literal, FixedStepCollapseIsReported)
 }
 
 } // namespace
+
+} // namespace dlf_test_literal

@@ -28,6 +28,10 @@
 #include <string>
 #include <vector>
 
+// The tests compile in unity batches (DLF_UNITY_BUILD): each file keeps its
+// names in a namespace of its own.
+namespace dlf_test_numerics {
+
 namespace D = CGAL::Surface_mesh_parameterization::internal::dlf;
 namespace SMP = CGAL::Surface_mesh_parameterization;
 
@@ -943,3 +947,5 @@ TEST(Paper_stall, PlainStepFixedConnectivityMushroom)
   EXPECT_NEAR(D::d_area_of(u, T.P.target), out.final_d_area, 1e-12 * out.final_d_area);
   for(const auto& h : out.history) EXPECT_GE(h.d_area, out.final_d_area * (1 - 1e-12));
 }
+
+} // namespace dlf_test_numerics

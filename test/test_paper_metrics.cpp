@@ -14,6 +14,10 @@
 #include <complex>
 #include <vector>
 
+// The tests compile in unity batches (DLF_UNITY_BUILD): each file keeps its
+// names in a namespace of its own.
+namespace dlf_test_paper_metrics {
+
 namespace {
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
@@ -175,3 +179,5 @@ TEST(PaperMetrics, DifferenceOfTwoMaps)
   d = SMP::discrete_lie_flow_map_difference(xyz, a, b, g.faces);
   EXPECT_GT(d.faces_not_compared, 0u);
 }
+
+} // namespace dlf_test_paper_metrics

@@ -23,6 +23,10 @@
 #include <fstream>
 #include <string>
 
+// The tests compile in unity batches (DLF_UNITY_BUILD): each file keeps its
+// names in a namespace of its own.
+namespace dlf_test_regressions {
+
 namespace {
 
 using dlf_cli::Cli_error;
@@ -203,3 +207,5 @@ TEST(Regression, RelaxationAndFlowAgreeOnTheSignOfEveryArea)
   EXPECT_EQ(R.caller_inverted_faces, 0u);
   EXPECT_NEAR(R.final_metrics.d_area, R.final_d_area, 1e-9);
 }
+
+} // namespace dlf_test_regressions

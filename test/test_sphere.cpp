@@ -36,6 +36,10 @@
 #include <string>
 #include <vector>
 
+// The tests compile in unity batches (DLF_UNITY_BUILD): each file keeps its
+// names in a namespace of its own.
+namespace dlf_test_sphere {
+
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace D = CGAL::Surface_mesh_parameterization::internal::dlf;
 
@@ -1603,3 +1607,5 @@ TEST(Sphere_start, GivenStartIsCertifiedAndUsed)
   o.sphere.start = SMP::Discrete_lie_flow_sphere_start::GIVEN;
   EXPECT_EQ(int(map_to_sphere(sm, second, o).status), int(SMP::ERROR_WRONG_PARAMETER));
 }
+
+} // namespace dlf_test_sphere

@@ -29,6 +29,10 @@
 #include <utility>
 #include <vector>
 
+// The tests compile in unity batches (DLF_UNITY_BUILD): each file keeps its
+// names in a namespace of its own.
+namespace dlf_test_sphere_paper {
+
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace D = CGAL::Surface_mesh_parameterization::internal::dlf;
 
@@ -409,3 +413,5 @@ TEST(Sphere_paper_map, HistoryCallbackAndErrors)
 }
 
 } // namespace
+
+} // namespace dlf_test_sphere_paper

@@ -26,6 +26,10 @@
 #include <string>
 #include <vector>
 
+// The tests compile in unity batches (DLF_UNITY_BUILD): each file keeps its
+// names in a namespace of its own.
+namespace dlf_test_volume {
+
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace D = CGAL::Surface_mesh_parameterization::internal::dlf;
 
@@ -1081,3 +1085,5 @@ TEST(Volume_paper, DensityMovesTheRegionsShareAndLiteralModeIsRefused)
   EXPECT_EQ(dlf.parameterize(m.points, m.tets, x), SMP::ERROR_WRONG_PARAMETER);
   EXPECT_NE(dlf.report().message.find("literal"), std::string::npos);
 }
+
+} // namespace dlf_test_volume
