@@ -350,7 +350,11 @@ json sphere_report(const Sphere_settings& s, const Indexed_mesh& input, const Sp
 
 Cli_error sphere_failure(const Sphere_settings& s, const Sphere_outcome& o)
 {
-  return Cli_error(s.input + ": " + SMP::discrete_lie_flow_error_name(o.status) + ": " + o.report.message,
+  // A mesh of another topology still has a map: say which command makes it.
+  const std::string other = int(o.status) == SMP::ERROR_NOT_GENUS_0
+                              ? "; 'dlf atlas' maps any mesh (several components, borders, any genus) into the plane"
+                              : "";
+  return Cli_error(s.input + ": " + SMP::discrete_lie_flow_error_name(o.status) + ": " + o.report.message + other,
                    o.input_error() ? EXIT_BAD_INPUT : EXIT_FLOW_ERROR);
 }
 
