@@ -399,7 +399,7 @@ bool atlas_fits(const Mesh_info& m, std::string& note)
   for(const Component_info& c : m.parts) cut = cut || c.genus() != 0 || c.border_loops == 0;
   if(cut) what.push_back("closed or higher-genus parts cut into disks");
   for(std::size_t k = 0; k < what.size(); ++k) note += (k ? ", " : "") + what[k];
-  if(note.empty()) note = "one chart, or more where it distorts";
+  if(note.empty()) note = "as it is";
   return true;
 }
 
