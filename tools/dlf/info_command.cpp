@@ -396,7 +396,7 @@ bool atlas_fits(const Mesh_info& m, std::string& note)
   if(!m.manifold()) what.push_back("non-manifold vertices split");
   if(m.zero_area_faces + m.repeated_vertex_faces) what.push_back("degenerate faces dropped");
   bool cut = false;
-  for(const Component_info& c : m.parts) cut = cut || c.genus() != 0 || c.border_loops == 0;
+  for(const Component_info& c : m.parts) cut = cut || c.genus() > 0 || c.border_loops == 0;
   if(cut) what.push_back("closed or higher-genus parts cut into disks");
   for(std::size_t k = 0; k < what.size(); ++k) note += (k ? ", " : "") + what[k];
   if(note.empty()) note = "as it is";
