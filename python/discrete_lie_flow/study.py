@@ -480,7 +480,7 @@ def _run_runner(row: dict, runner: str, config: Config, mesh_path: str, timeout:
     elif report is None or not isinstance(report.get("status"), str):
         row["status"] = "error"
         lines = [l for l in err.splitlines() if l.strip()]
-        row["error"] = lines[-1][:500] if lines else f"exit {code} without a report"
+        row["error"] = lines[-1] if lines else f"exit {code} without a report"
     else:
         status = report["status"]
         row["status"] = {"ok": "ok", "not_converged": "not_converged", "skipped": "input_error",
