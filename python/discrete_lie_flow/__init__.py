@@ -6,9 +6,9 @@ of triangle meshes, from NumPy arrays.
     import discrete_lie_flow as dlf
     V, F = dlf.read_mesh("face.off")      # any format CGAL reads: OFF, OBJ, PLY, STL
     uv, report = dlf.disk(V, F)           # a disk onto the unit disk
+    metrics = dlf.score(V, F, uv)         # distortion of any per-vertex map
     points, report = dlf.sphere(V, F)     # a closed genus-0 mesh onto the unit sphere
-    uv, report = dlf.atlas(V, F)          # any triangle mesh to an atlas in the unit square
-    metrics = dlf.score(V, F, uv)         # distortion of any map
+    corners, report = dlf.atlas(V, F)     # any triangle mesh to an atlas in the unit square
     dlf.info(V, F)                        # topology, degeneracies, what the mesh fits
 
 ``V`` is an (n, 3) array of vertex positions and ``F`` an (m, 3) array of
@@ -27,13 +27,15 @@ for input the tool refuses (a mesh that is not a disk, a bad option);
 returned but falls short -- the flow stopped before its targets
 (``report["status"] == "not_converged"``) or, in the paper and literal
 modes, input triangles left inverted (``report["caller_inverted_faces"]``)
--- raises a ``UserWarning`` that says so, or, with ``strict=True``,
-:class:`FlowError` with the report. The flow runs without the GIL; a ``callback`` is called after
+-- issues a ``UserWarning`` that says so in the report's words, or, with
+``strict=True``, raises :class:`FlowError` with the report. The flow runs
+without the GIL; a ``callback`` is called after
 every iteration with a dict (iteration, step, critical_step, limiting_face,
 d_area, residual, backtracks, flips, seconds) and stops the flow by
 returning ``False`` (the map so far is returned, its report says
-``stop_reason == "interrupted"``); an exception raised by the callback
-stops the flow and propagates.
+``stop_reason == "interrupted"``, and no warning is issued: the caller
+stopped it); an exception raised by the callback stops the flow and
+propagates.
 """
 
 import os as _os
