@@ -893,6 +893,78 @@ check "volume --mode paper: D_vol below the certified start's" \
 check "volume --mode literal: exit 1, named" equals "$? $(grep -c 'mode takes certified or paper' vol_mode.err)" "1 1"
 "$DLF" volume vol_sphere.mesh --threads 1 -o vol_t1.mesh -q && "$DLF" volume vol_sphere.mesh --threads 2 -o vol_t2.mesh -q
 check "volume --threads 1 and --threads 2: the same points, bit for bit" cmp -s vol_t1.mesh vol_t2.mesh
+
+# --- tables: --csv beside --report, one seconds layout -------------------------
+# csv_matches_json R.csv R.json: a header and one row, the columns the JSON
+# report's keys flattened (objects and lists joined by '.', history and
+# chart_list left out), each cell the JSON value (null: empty).
+csv_matches_json() { python3 - "$@" <<'PY'
+import csv, json, sys
+rows = list(csv.reader(open(sys.argv[1], newline="")))
+report = json.load(open(sys.argv[2]))
+cells = []
+def flatten(j, name):
+    if isinstance(j, dict) and j:
+        for k, v in j.items():
+            if not (name == "" and k in ("history", "chart_list")):
+                flatten(v, k if name == "" else name + "." + k)
+    elif isinstance(j, list) and j:
+        for k, v in enumerate(j):
+            flatten(v, f"{name}.{k}")
+    else:
+        cells.append((name, j))
+flatten(report, "")
+assert len(rows) == 2, f"{len(rows)} lines, expected a header and one row"
+assert rows[0] == [c[0] for c in cells], f"columns {rows[0][:8]}... differ from the report's keys {[c[0] for c in cells][:8]}..."
+for (name, value), text in zip(cells, rows[1]):
+    if value is None or value == [] or value == {}:
+        ok = text == ""
+    elif isinstance(value, bool):
+        ok = text == ("true" if value else "false")
+    elif isinstance(value, (int, float)):
+        ok = float(text) == float(value)
+    else:
+        ok = text == value
+    assert ok, f"{name}: CSV '{text}', JSON {value!r}"
+assert len(rows[1]) == len(cells)
+PY
+}
+# seconds_layout R.json: "seconds" begins with read check initial flow write pictures total, in this order.
+seconds_layout() { python3 -c '
+import json, sys
+s = json.load(open(sys.argv[1]))["seconds"]
+keys = list(s)[:7]
+assert keys == ["read", "check", "initial", "flow", "write", "pictures", "total"], keys
+assert all(isinstance(s[k], (int, float)) and s[k] >= 0 for k in keys), s
+' "$1"; }
+"$DLF" disk "$NEF" --roi-ball 0 0 0 1 --factor 2 -o tab.obj --report tab.json --csv tab.csv -q
+check "disk --csv: exit 0, one row, the report's flattened keys and values (regions by index)" csv_matches_json tab.csv tab.json
+check "disk --csv: the region's achieved share is a column" grep -q 'regions.0.achieved_fraction' tab.csv
+check "disk: seconds read, check, initial, flow, write, pictures, total" seconds_layout tab.json
+check "disk: seconds.read and seconds.write measured" number_is "$(json_get tab.json seconds read)" ">" 0
+"$DLF" disk "$NEF" --max-iterations 0 --history --csv tab_cap.csv -q 2> /dev/null
+check "disk --csv on a run stopped short: status not_converged in its column (a message with commas, quoted), no history columns" python3 -c '
+import csv, sys
+h, r = list(csv.reader(open(sys.argv[1])))
+assert dict(zip(h, r))["status"] == "not_converged" and not any(c.startswith("history") for c in h), h' tab_cap.csv
+"$DLF" sphere "$MESHES/sphere.off" --report tab_sph.json --csv tab_sph.csv -o tab_sph.obj -q
+check "sphere --csv: the report's flattened keys and values" csv_matches_json tab_sph.csv tab_sph.json
+check "sphere: the seconds layout of disk" seconds_layout tab_sph.json
+check "sphere: seconds.read and seconds.write measured" number_is "$(json_get tab_sph.json seconds write)" ">" 0
+"$DLF" volume vol_sphere.mesh --max-iterations 2 --report tab_vol.json --csv tab_vol.csv -o tab_vol.mesh -q
+check "volume --csv: the report's flattened keys and values" csv_matches_json tab_vol.csv tab_vol.json
+check "volume: the seconds layout of disk, the start's parts after it" seconds_layout tab_vol.json
+check "volume: seconds.initial is its border, interior and untangling" python3 -c '
+import json, sys
+s = json.load(open(sys.argv[1]))["seconds"]
+assert abs(s["initial"] - (s["border"] + s["interior"] + s["untangle"])) <= 1e-12 * max(1, s["initial"]), s' tab_vol.json
+"$DLF" score "$NEF" tab.obj --report tab_score.json --csv tab_score.csv -q
+check "score --csv: the report's flattened keys and values" csv_matches_json tab_score.csv tab_score.json
+"$DLF" atlas "$NEF" -o tab_atlas.obj --report tab_atlas.json --csv tab_atlas.csv --quiet
+check "atlas --csv: the report's keys and values, chart_list left out" csv_matches_json tab_atlas.csv tab_atlas.json
+"$DLF" disk "$NEF" -o tab_bad.obj --csv no_such_dir/t.csv -q 2> tab_bad.err
+check "disk --csv into a missing directory: exit 1 before any work, nothing written" equals \
+  "$? $(grep -c "csv 'no_such_dir/t.csv': directory 'no_such_dir' does not exist" tab_bad.err) $(test -e tab_bad.obj; echo $?)" "1 1 1"
 check "volume: the report names the flow's threads and preconditioner (automatic: one thread on a small mesh)" equals \
   "$(json_get vol.json options threads) $(json_get vol.json options threads_used) $(json_get vol.json options coarse_aggregate) $(json_get vol.json options cg_forcing)" \
   "0 1 64 true"
