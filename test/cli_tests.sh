@@ -441,6 +441,38 @@ check "info: report says fits none" equals "$(json_get bowtie.json "" fits)" non
 "$DLF" info "$MESHES/lion-head.off" --report lion_info.json -q
 check "info: lion-head's numbers" equals "$(json_get lion_info.json "" faces) $(json_get lion_info.json "" border_loops) $(json_get lion_info.json "" genus)" "16674 1 0"
 check "info --help" bash -c "'$DLF' info --help | grep -q 'Usage: dlf info'"
+# Polygons: area, angles and genus computed on the polygons themselves.
+# jpath FILE EXPR: a value of the report (Python expression on r).
+jpath() { python3 -c 'import json, sys; r = json.load(open(sys.argv[1])); print(eval(sys.argv[2]))' "$1" "$2"; }
+"$DLF" info "$MESHES/cube_quad.off" --report cube_quad.json > cube_quad.out
+check "info on quads (the cube of side 2): genus 0, area 24, smallest angle 90, 1 component" equals \
+  "$(jpath cube_quad.json '[r["genus"], r["area"], r["min_angle_degrees"], r["connected_components"], r["components"][0]["genus"]]')" \
+  "[0, 24.0, 90.0, 1, 0]"
+check "info on quads: the text says the same" bash -c "grep -q '^  genus                 0$' cube_quad.out &&
+  grep -q '^  surface area          24$' cube_quad.out && grep -q '^  smallest angle        90 degrees' cube_quad.out"
+check "info on quads: dlf atlas fits, triangulating" grep -q '^  dlf atlas             fits (polygons triangulated' cube_quad.out
+# One flat heptagon with a slit: its reflex corner (356 degrees) is not a
+# 4-degree angle; area 16 less the slit's 0.3.
+printf 'OFF\n7 1 0\n0 0 0\n4 0 0\n4 4 0\n2.1 4 0\n2 1 0\n1.9 4 0\n0 4 0\n7 0 1 2 3 4 5 6\n' > slit.off
+"$DLF" info slit.off --report slit.json > slit.out
+check "info on a non-convex polygon: area 15.7, smallest angle 90 (the reflex corner counted as reflex)" equals \
+  "$(jpath slit.json '[round(r["area"], 9), round(r["min_angle_degrees"], 9), r["genus"]]')" "[15.7, 90.0, 0]"
+# A Möbius strip of three quads: one border loop, not orientable, so no genus.
+printf 'OFF\n6 3 0\n0 0 0\n1 0 1\n2 0 0\n0 1 0\n1 1 1\n2 1 0\n4 0 1 4 3\n4 1 2 5 4\n4 2 3 0 5\n' > moebius.off
+"$DLF" info moebius.off --report moebius.json > moebius.out
+check "info: a Moebius strip is not orientable, its genus null, n/a in the text" bash -c \
+  "[ '$(jpath moebius.json '[r["components"][0]["orientable"], r["genus"], r["border_loops"]]')' = '[False, None, 1]' ] &&
+   grep -q '^  genus                 n/a (not orientable)$' moebius.out"
+printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 3 2\n' > reversed.off
+check "info: a disk with one face reversed is orientable, genus 0" equals \
+  "$("$DLF" info reversed.off --report reversed.json -q; jpath reversed.json '[r["components"][0]["orientable"], r["genus"], r["inconsistently_oriented_edges"]]')" \
+  "[True, 0, 1]"
+# Three components: each listed, text and report, with its genus.
+"$DLF" info "$MESHES/blobby_3cc.off" --report b3cc.json > b3cc.out
+check "info on 3 components: each with its genus, none for the mesh" bash -c \
+  "[ '$(jpath b3cc.json '[r["connected_components"], len(r["components"]), r["genus"], all(c["genus"] == 0 for c in r["components"])]')' = '[3, 3, None, True]' ] &&
+   [ \$(grep -c '^    component [0-2] .*, genus 0, area ' b3cc.out) = 3 ] && grep -q '^  genus                 n/a (3 components: each below)$' b3cc.out &&
+   grep -q '^  dlf atlas             fits (each of the 3 components' b3cc.out"
 
 # --- meshes with holes (genus 0, several border loops) --------------------------
 # The longest loop is the outer one by default, the others float; the library
@@ -498,13 +530,22 @@ expect_error() { # expect_error DESCRIPTION EXPECTED_CODE MESSAGE_PATTERN ARGS..
 expect_error "missing file" 1 "cannot open" disk no_such_mesh.off
 expect_error "garbage OFF" 1 "cannot read" disk garbage.off
 expect_error "garbage OBJ" 1 "cannot read" disk garbage.obj
-expect_error "closed mesh (not a disk)" 1 "0 border loops" disk "$MESHES/sphere.off"
-expect_error "torus (not a disk)" 1 "genus 1" disk "$MESHES/pipe.off"
-expect_error "non-triangle faces" 1 "not triangles" disk "$MESHES/quad.off"
-expect_error "genus 3 with holes" 1 "106 border loops, genus 3" disk "$MESHES/elephant-with-holes.off"
+expect_error "closed mesh (not a disk): the reason first, dlf sphere named" 1 \
+  "not a disk: a closed surface (no border loop) of genus 0 (Euler characteristic 2); dlf disk needs a border: 'dlf sphere' maps it" \
+  disk "$MESHES/sphere.off"
+expect_error "torus (not a disk): the reason first, dlf atlas named" 1 \
+  "not a disk: a closed surface (no border loop) of genus 1 (Euler characteristic 0); dlf disk needs a border: cut it open, or 'dlf atlas'" \
+  disk "$MESHES/pipe.off"
+expect_error "three components (not a disk): the reason first, dlf atlas named" 1 \
+  "not a disk: 3 connected components (dlf disk maps one), [0-9]* border loops in all, .*; 'dlf atlas' maps every component" \
+  disk "$MESHES/blobby_3cc.off"
+expect_error "non-triangle faces" 1 "faces are not triangles (first: face .*); triangulate the mesh first, or 'dlf atlas'" \
+  disk "$MESHES/quad.off"
+expect_error "genus 3 with holes" 1 "not a disk: genus 3 with 106 border loops (Euler characteristic -110); dlf disk takes genus 0" \
+  disk "$MESHES/elephant-with-holes.off"
 # Two triangles joined at one vertex (a bow tie): one face each side, but two fans at the vertex.
 printf 'OFF\n5 2 0\n0 0 0\n1 0 0\n0 1 0\n-1 0 0\n0 -1 0\n3 0 1 2\n3 0 3 4\n' > bowtie_disk.off
-expect_error "two fans at a vertex (not manifold)" 1 "not manifold" disk bowtie_disk.off
+expect_error "two fans at a vertex (not manifold)" 1 "the mesh is not manifold .*; 'dlf atlas' splits" disk bowtie_disk.off
 # A hexagon fan, once plain, once with signs, exponents, comments, colours
 # and one face reversed (oriented on reading): the same map.
 printf 'OFF\n7 6 0\n0 0 0\n1 0 0\n0.5 0.866 0\n-0.5 0.866 0\n-1 0 0\n-0.5 -0.866 0\n0.5 -0.866 0\n3 0 1 2\n3 0 2 3\n3 0 3 4\n3 0 4 5\n3 0 5 6\n3 0 6 1\n' > hexagon.off
@@ -536,13 +577,22 @@ expect_error "--border square with lscm" 1 "fixed-border" disk input.off --init 
 expect_error "--mu out of range" 1 "--mu" disk input.off --mu 1.5
 expect_error "missing INPUT" 1 "missing INPUT" disk
 expect_error "unknown command" 1 "unknown command" frobnicate input.off
-expect_error "sphere: torus refused" 1 "genus" sphere "$MESHES/pipe.off"
+expect_error "sphere: torus refused, the genus first" 1 \
+  "ERROR_NOT_GENUS_0: not a closed genus-0 surface: a closed surface of genus 1 (Euler characteristic 0); .*'dlf atlas' maps any mesh" \
+  sphere "$MESHES/pipe.off"
+# Three components with borders: they are the reason, not the Euler
+# characteristic (which is a sphere's, 2, for these three disks with holes).
+expect_error "sphere: 3 components refused, the components and borders first" 1 \
+  "ERROR_NOT_GENUS_0: not a closed genus-0 surface: 3 components and [1-9][0-9]* border edges; a spherical map needs one closed, manifold component (this mesh: Euler characteristic 2); 'dlf atlas' maps any mesh" \
+  sphere "$MESHES/blobby_3cc.off"
+expect_error "sphere: polygons refused, dlf atlas named" 1 "not triangles .*; triangulate the mesh first, or 'dlf atlas' triangulates it" \
+  sphere "$MESHES/cube_quad.off"
 expect_error "sphere: negative --log-area-tolerance" 1 "log-area-tolerance" sphere "$MESHES/sphere.off" --log-area-tolerance -1
 expect_error "sphere: --roi-ball without --factor" 1 "factor" sphere "$MESHES/sphere.off" --roi-ball 0 0 1 0.8
 expect_error "sphere: --density and --roi exclude each other" 1 "exclude" sphere "$MESHES/sphere.off" --density sph_rho.txt --roi-ball 0 0 1 0.8 --factor 2
 expect_error "sphere: --band without a region" 1 "band" sphere "$MESHES/sphere.off" --band 0.1
 expect_error "sphere: negative --share-tolerance" 1 "share-tolerance" sphere "$MESHES/sphere.off" --share-tolerance -1
-expect_error "sphere: open mesh refused" 1 "ERROR_NOT_GENUS_0" sphere "$NEF"
+expect_error "sphere: open mesh refused, the border first" 1 "ERROR_NOT_GENUS_0: not a closed genus-0 surface: [1-9][0-9]* border edges;" sphere "$NEF"
 
 OUTPUTS="-o out/o.obj --svg out/l.svg" expect_error "--texture not an .obj" 1 "ending in .obj" disk input.off --texture out/t.png
 expect_error "--texture-size too small" 1 "--texture-size must be in" disk input.off --texture-size 8
@@ -728,7 +778,7 @@ for row in lion:4 lion2:4 lion3:3 lion4:3; do
 done
 cp "$MESHES/blob.off" blob.off
 printf '\n\n95 114 114 101 101 95\n' > ring.selection.txt
-expect_error "--seam: a seam loop cuts off a piece" 1 "found 2 connected components" disk blob.off --seam ring.selection.txt
+expect_error "--seam: a seam loop cuts off a piece" 1 "not a disk: 2 connected components" disk blob.off --seam ring.selection.txt
 # A square has 4 corners; an ear away from one would be flattened: the error says so.
 OUTPUTS="-o out/o.obj" expect_error "--border square with more than 4 ears on the border: named" 2 \
   "ERROR_BORDER_TOO_SHORT: .*the outer loop has [0-9]* ears, triangles with two border edges, at vertices [0-9]" \
@@ -843,6 +893,78 @@ check "volume --mode paper: D_vol below the certified start's" \
 check "volume --mode literal: exit 1, named" equals "$? $(grep -c 'mode takes certified or paper' vol_mode.err)" "1 1"
 "$DLF" volume vol_sphere.mesh --threads 1 -o vol_t1.mesh -q && "$DLF" volume vol_sphere.mesh --threads 2 -o vol_t2.mesh -q
 check "volume --threads 1 and --threads 2: the same points, bit for bit" cmp -s vol_t1.mesh vol_t2.mesh
+
+# --- tables: --csv beside --report, one seconds layout -------------------------
+# csv_matches_json R.csv R.json: a header and one row, the columns the JSON
+# report's keys flattened (objects and lists joined by '.', history and
+# chart_list left out), each cell the JSON value (null: empty).
+csv_matches_json() { python3 - "$@" <<'PY'
+import csv, json, sys
+rows = list(csv.reader(open(sys.argv[1], newline="")))
+report = json.load(open(sys.argv[2]))
+cells = []
+def flatten(j, name):
+    if isinstance(j, dict) and j:
+        for k, v in j.items():
+            if not (name == "" and k in ("history", "chart_list")):
+                flatten(v, k if name == "" else name + "." + k)
+    elif isinstance(j, list) and j:
+        for k, v in enumerate(j):
+            flatten(v, f"{name}.{k}")
+    else:
+        cells.append((name, j))
+flatten(report, "")
+assert len(rows) == 2, f"{len(rows)} lines, expected a header and one row"
+assert rows[0] == [c[0] for c in cells], f"columns {rows[0][:8]}... differ from the report's keys {[c[0] for c in cells][:8]}..."
+for (name, value), text in zip(cells, rows[1]):
+    if value is None or value == [] or value == {}:
+        ok = text == ""
+    elif isinstance(value, bool):
+        ok = text == ("true" if value else "false")
+    elif isinstance(value, (int, float)):
+        ok = float(text) == float(value)
+    else:
+        ok = text == value
+    assert ok, f"{name}: CSV '{text}', JSON {value!r}"
+assert len(rows[1]) == len(cells)
+PY
+}
+# seconds_layout R.json: "seconds" begins with read check initial flow write pictures total, in this order.
+seconds_layout() { python3 -c '
+import json, sys
+s = json.load(open(sys.argv[1]))["seconds"]
+keys = list(s)[:7]
+assert keys == ["read", "check", "initial", "flow", "write", "pictures", "total"], keys
+assert all(isinstance(s[k], (int, float)) and s[k] >= 0 for k in keys), s
+' "$1"; }
+"$DLF" disk "$NEF" --roi-ball 0 0 0 1 --factor 2 -o tab.obj --report tab.json --csv tab.csv -q
+check "disk --csv: exit 0, one row, the report's flattened keys and values (regions by index)" csv_matches_json tab.csv tab.json
+check "disk --csv: the region's achieved share is a column" grep -q 'regions.0.achieved_fraction' tab.csv
+check "disk: seconds read, check, initial, flow, write, pictures, total" seconds_layout tab.json
+check "disk: seconds.read and seconds.write measured" number_is "$(json_get tab.json seconds read)" ">" 0
+"$DLF" disk "$NEF" --max-iterations 0 --history --csv tab_cap.csv -q 2> /dev/null
+check "disk --csv on a run stopped short: status not_converged in its column (a message with commas, quoted), no history columns" python3 -c '
+import csv, sys
+h, r = list(csv.reader(open(sys.argv[1])))
+assert dict(zip(h, r))["status"] == "not_converged" and not any(c.startswith("history") for c in h), h' tab_cap.csv
+"$DLF" sphere "$MESHES/sphere.off" --report tab_sph.json --csv tab_sph.csv -o tab_sph.obj -q
+check "sphere --csv: the report's flattened keys and values" csv_matches_json tab_sph.csv tab_sph.json
+check "sphere: the seconds layout of disk" seconds_layout tab_sph.json
+check "sphere: seconds.read and seconds.write measured" number_is "$(json_get tab_sph.json seconds write)" ">" 0
+"$DLF" volume vol_sphere.mesh --max-iterations 2 --report tab_vol.json --csv tab_vol.csv -o tab_vol.mesh -q
+check "volume --csv: the report's flattened keys and values" csv_matches_json tab_vol.csv tab_vol.json
+check "volume: the seconds layout of disk, the start's parts after it" seconds_layout tab_vol.json
+check "volume: seconds.initial is its border, interior and untangling" python3 -c '
+import json, sys
+s = json.load(open(sys.argv[1]))["seconds"]
+assert abs(s["initial"] - (s["border"] + s["interior"] + s["untangle"])) <= 1e-12 * max(1, s["initial"]), s' tab_vol.json
+"$DLF" score "$NEF" tab.obj --report tab_score.json --csv tab_score.csv -q
+check "score --csv: the report's flattened keys and values" csv_matches_json tab_score.csv tab_score.json
+"$DLF" atlas "$NEF" -o tab_atlas.obj --report tab_atlas.json --csv tab_atlas.csv --quiet
+check "atlas --csv: the report's keys and values, chart_list left out" csv_matches_json tab_atlas.csv tab_atlas.json
+"$DLF" disk "$NEF" -o tab_bad.obj --csv no_such_dir/t.csv -q 2> tab_bad.err
+check "disk --csv into a missing directory: exit 1 before any work, nothing written" equals \
+  "$? $(grep -c "csv 'no_such_dir/t.csv': directory 'no_such_dir' does not exist" tab_bad.err) $(test -e tab_bad.obj; echo $?)" "1 1 1"
 check "volume: the report names the flow's threads and preconditioner (automatic: one thread on a small mesh)" equals \
   "$(json_get vol.json options threads) $(json_get vol.json options threads_used) $(json_get vol.json options coarse_aggregate) $(json_get vol.json options cg_forcing)" \
   "0 1 64 true"

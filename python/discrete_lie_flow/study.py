@@ -480,7 +480,7 @@ def _run_runner(row: dict, runner: str, config: Config, mesh_path: str, timeout:
     elif report is None or not isinstance(report.get("status"), str):
         row["status"] = "error"
         lines = [l for l in err.splitlines() if l.strip()]
-        row["error"] = lines[-1][:500] if lines else f"exit {code} without a report"
+        row["error"] = lines[-1] if lines else f"exit {code} without a report"
     else:
         status = report["status"]
         row["status"] = {"ok": "ok", "not_converged": "not_converged", "skipped": "input_error",
@@ -788,6 +788,21 @@ def _fmt(x, digits=4) -> str:
     return str(x)
 
 
+def _cell(text: Optional[str]) -> str:
+    """A whole message as one Markdown table cell: never cut, its line breaks
+    and pipes (which would end the cell) replaced."""
+    return " ".join((text or "").split()).replace("|", "/")
+
+
+def is_valid_map(row: dict) -> bool:
+    """A map the tool wrote whose input triangles are all positive: ok or
+    not_converged, no inverted face in the report nor, when checked, in the
+    written map. The paper and literal modes certify only the flowing
+    triangulation and may leave input triangles inverted: not valid."""
+    return (row["status"] in ("ok", "not_converged") and not (row["inverted_faces"] or 0)
+            and not (row.get("checked_inverted") or 0))
+
+
 def summary_markdown(db: sqlite3.Connection) -> str:
     rows = [dict(zip(COLUMNS, r)) for r in db.execute(f"SELECT {', '.join(COLUMNS)} FROM runs ORDER BY config, mesh")]
     configs = sorted({r["config"] for r in rows}, key=lambda c: list(CONFIGS).index(c) if c in CONFIGS else 99)
@@ -798,24 +813,31 @@ def summary_markdown(db: sqlite3.Connection) -> str:
         mine = [r for r in rows if r["config"] == c]
         counts = [sum(r["status"] == s for r in mine) for s in STATUSES]
         out.append(f"| {c} | " + " | ".join(str(n) for n in counts) + f" | {len(mine)} |")
-    out += ["", "Valid maps (ok or not_converged): D_area (optimum 2), inverted faces, seconds of the whole `dlf` process.",
-            "", "| configuration | maps | converged | D_area median | D_area max | inverted faces | seconds median | seconds total |",
-            "|---|---|---|---|---|---|---|---|"]
+    out += ["", "Valid maps (ok or not_converged, no inverted input triangle): D_area (optimum 2), seconds of the whole "
+            "`dlf` process.",
+            "", "| configuration | maps | converged | D_area median | D_area max | seconds median | seconds total |",
+            "|---|---|---|---|---|---|---|"]
     for c in configs:
-        mine = [r for r in rows if r["config"] == c and r["status"] in ("ok", "not_converged")]
+        mine = [r for r in rows if r["config"] == c and is_valid_map(r)]
         d = [r["d_area"] for r in mine if r["d_area"] is not None]
         t = [r["seconds"] for r in mine if r["seconds"] is not None]
-        inv = sum(r["inverted_faces"] or 0 for r in mine)
         out.append(f"| {c} | {len(mine)} | {sum(r['status'] == 'ok' for r in mine)} | {_fmt(_median(d))} | "
-                   f"{_fmt(max(d) if d else None)} | {inv} | {_fmt(_median(t), 3)} | {_fmt(sum(t), 4)} |")
+                   f"{_fmt(max(d) if d else None)} | {_fmt(_median(t), 3)} | {_fmt(sum(t), 4)} |")
+    folded = [r for r in rows if r["status"] in ("ok", "not_converged") and not is_valid_map(r)]
+    if folded:
+        out += ["", f"Maps written with inverted input triangles ({len(folded)}; the paper and literal modes certify "
+                "only the flowing triangulation): not valid maps.", "",
+                "| mesh | configuration | status | inverted faces | D_area |", "|---|---|---|---|---|"]
+        for r in folded:
+            inverted = max(r["inverted_faces"] or 0, r.get("checked_inverted") or 0)
+            out.append(f"| {r['mesh']} | {r['config']} | {r['status']} | {inverted} | {_fmt(r['d_area'])} |")
     bad = [r for r in rows if r["status"] in ("crash", "timeout", "error")]
     out += ["", f"Crashes, timeouts and other failures of the tool: {len(bad)}.", ""]
     if bad:
         out += ["| mesh | configuration | status | signal | stderr (end) |", "|---|---|---|---|---|"]
         for r in bad:
             tail = (r["stderr_tail"] or "").strip().splitlines()[-1:] or [""]
-            out.append(f"| {r['mesh']} | {r['config']} | {r['status']} | {_fmt(r['exit_signal'])} | "
-                       f"{tail[0].replace('|', '/')[:160]} |")
+            out.append(f"| {r['mesh']} | {r['config']} | {r['status']} | {_fmt(r['exit_signal'])} | {_cell(tail[0])} |")
     checked = [r for r in rows if r["violation"] is not None or r["exit_mismatch"] is not None
                or r["checked_inverted"] is not None]
     if checked:
@@ -829,8 +851,58 @@ def summary_markdown(db: sqlite3.Connection) -> str:
     if refused:
         out += ["", "Inputs the tool refused, and why:", "", "| mesh | configuration | status | error |", "|---|---|---|---|"]
         for r in refused:
-            out.append(f"| {r['mesh']} | {r['config']} | {r['status']} | {(r['error'] or '').replace('|', '/')[:200]} |")
+            out.append(f"| {r['mesh']} | {r['config']} | {r['status']} | {_cell(r['error'])} |")
     return "\n".join(out) + "\n"
+
+
+def box_labels(configs: Sequence[str], data: Sequence[Sequence[float]]) -> List[str]:
+    """The box plot's labels: each configuration with the number of maps its box is drawn from."""
+    return [f"{c}\nn = {len(values)}" for c, values in zip(configs, data)]
+
+
+EXPORT_COLUMNS = tuple(c for c in COLUMNS if c != "report")
+
+
+def export_csv(db: sqlite3.Connection, out) -> int:
+    """Writes the runs as CSV to the text stream `out`: a header of the
+    table's column names (all but the JSON `report`) and one row per run,
+    ordered by configuration and mesh; null is an empty cell. Returns the
+    number of rows."""
+    import csv
+
+    writer = csv.writer(out, lineterminator="\n")
+    writer.writerow(EXPORT_COLUMNS)
+    n = 0
+    for row in db.execute(f"SELECT {', '.join(EXPORT_COLUMNS)} FROM runs ORDER BY config, mesh"):
+        writer.writerow(["" if v is None else v for v in row])
+        n += 1
+    return n
+
+
+def export_study(args: argparse.Namespace) -> int:
+    if not os.path.isfile(args.db):
+        raise SystemExit(f"dlf-study: error: {args.db}: no such database")
+    db = sqlite3.connect(f"file:{args.db}?mode=ro", uri=True)
+    try:
+        if args.csv == "-":
+            export_csv(db, sys.stdout)
+            return 0
+        target = Path(args.csv)
+        if not target.parent.is_dir():
+            raise SystemExit(f"dlf-study: error: --csv {args.csv}: directory '{target.parent}' does not exist")
+        # All or nothing: a temporary beside the target, renamed once complete.
+        tmp = target.parent / f".{target.name}.dlf-study-{os.getpid()}.tmp"
+        try:
+            with open(tmp, "w", encoding="utf-8", newline="") as f:
+                n = export_csv(db, f)
+            os.replace(tmp, target)
+        finally:
+            if tmp.exists():
+                tmp.unlink()
+        print(f"wrote {target} ({n} runs)")
+        return 0
+    finally:
+        db.close()
 
 
 def write_plots(db: sqlite3.Connection, outdir: Path) -> List[str]:
@@ -839,17 +911,22 @@ def write_plots(db: sqlite3.Connection, outdir: Path) -> List[str]:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    rows = list(db.execute("SELECT config, d_area, seconds, faces FROM runs WHERE status IN ('ok', 'not_converged')"))
+    valid = [r for r in (dict(zip(COLUMNS, x)) for x in db.execute(f"SELECT {', '.join(COLUMNS)} FROM runs"))
+             if is_valid_map(r)]
+    rows = [(r["config"], r["d_area"], r["seconds"], r["faces"]) for r in valid]
     configs = [c for c in CONFIGS if any(r[0] == c for r in rows)] + sorted(
         {r[0] for r in rows} - set(CONFIGS))
     written = []
     fig, ax = plt.subplots(figsize=(7, 4))
     data = [[max(r[1] - 2, 1e-16) for r in rows if r[0] == c and r[1] is not None] for c in configs]
     if any(data):
-        ax.boxplot(data, labels=configs, whis=(0, 100))
+        ax.boxplot(data, labels=box_labels(configs, data), whis=(0, 100))
+        # Every map as a point: a box drawn from a few maps shows them all.
+        for k, values in enumerate(data):
+            ax.plot([k + 1] * len(values), values, ".", color="black", alpha=0.5, markersize=3)
         ax.set_yscale("log")
     ax.set_ylabel("D_area - 2 (log)")
-    ax.set_title("Area distortion of the valid maps, per configuration")
+    ax.set_title("Area distortion of the valid maps, per configuration (n: maps)")
     fig.tight_layout()
     fig.savefig(outdir / "d_area.png", dpi=110)
     plt.close(fig)
@@ -937,6 +1014,11 @@ def parser() -> argparse.ArgumentParser:
     g.add_argument("db", metavar="STUDY.sqlite")
     g.add_argument("-o", "--output", metavar="DIR", help="write DIR/summary.md, DIR/d_area.png, DIR/time_vs_faces.png "
                                                          "(default: the summary on stdout)")
+    e = sub.add_parser("export", help="the runs of a study as a table")
+    e.add_argument("db", metavar="STUDY.sqlite")
+    e.add_argument("--csv", required=True, metavar="FILE",
+                   help="write the runs as CSV, one row per run, the columns of the database but the JSON report "
+                        "('-': stdout)")
     sub.add_parser("configs", help="list the configurations")
     return p
 
@@ -958,6 +1040,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
             return 130
     if args.command == "report":
         return report_study(args)
+    if args.command == "export":
+        return export_study(args)
     for c in CONFIGS.values():
         command = " ".join(("dlf", c.command) + c.options)
         print(f"{c.name:16} {command:30} {c.description}")

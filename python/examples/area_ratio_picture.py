@@ -9,6 +9,7 @@ of their area ratio (share of the map's area over share of the surface's).
 """
 
 import sys
+import warnings
 
 import matplotlib
 
@@ -20,17 +21,6 @@ from matplotlib.collections import PolyCollection
 import discrete_lie_flow as dlf
 
 
-def read_off(path):
-    words = []
-    with open(path) as f:
-        for line in f:
-            words += line.split("#")[0].split()
-    n, m = int(words[1]), int(words[2])
-    V = np.array(words[4:4 + 3 * n], dtype=float).reshape(n, 3)
-    F = np.array(words[4 + 3 * n:4 + 3 * n + 4 * m], dtype=int).reshape(m, 4)[:, 1:]
-    return V, F
-
-
 def log2_area_ratio(V, F, uv):
     a, b, c = (V[F[:, k]] for k in range(3))
     area3 = 0.5 * np.linalg.norm(np.cross(b - a, c - a), axis=1)
@@ -40,9 +30,11 @@ def log2_area_ratio(V, F, uv):
 
 
 def main(mesh, out):
-    V, F = read_off(mesh)
-    # The initial map: no iteration of the flow.
-    tutte, _ = dlf.disk(V, F, max_iterations=0)
+    V, F = dlf.read_mesh(mesh)
+    # The initial map: no iteration of the flow (not converged, on purpose).
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", UserWarning)
+        tutte, _ = dlf.disk(V, F, max_iterations=0)
     uv, report = dlf.disk(V, F)
     centroid_x = V[F].mean(axis=1)[:, 0]
     rho = np.where(centroid_x > np.median(centroid_x), 4.0, 1.0)  # one value per face

@@ -609,3 +609,67 @@ def test_build_tree_script_is_not_shadowed_by_the_sources():
     p = subprocess.run([str(script), "configs"], cwd=str(sources), env=env, capture_output=True, text=True, timeout=120)
     assert p.returncode == 0, p.stderr
     assert "disk-square" in p.stdout, p.stdout
+
+
+# --- report and export, on a database written here (no runs) -----------------------
+
+def table_rows():
+    long_refusal = ("'x.off': not a disk: 2 connected components (keep one), 219 border edges; at least one "
+                    "component is closed; 'dlf info' lists them | and this text runs on past two hundred characters "
+                    "so that a cut would fall in the middle of a word such as this")
+    base = dict(vertices=10, faces=16, iterations=5, finished_at="2026-01-01T00:00:00Z", command="dlf")
+    return [
+        dict(base, mesh="a.off", config="disk-certified", status="ok", d_area=2.004, inverted_faces=0, seconds=0.5),
+        dict(base, mesh="b.off", config="disk-certified", status="not_converged", d_area=2.2, inverted_faces=0, seconds=0.7),
+        dict(base, mesh="a.off", config="disk-paper", status="ok", d_area=2.001, inverted_faces=373, seconds=0.4),
+        dict(base, mesh="b.off", config="disk-paper", status="ok", d_area=2.003, inverted_faces=0, seconds=0.6,
+             checked_inverted=2),
+        dict(base, mesh="c.off", config="disk-paper", status="ok", d_area=2.002, inverted_faces=0, seconds=0.3),
+        dict(base, mesh="x.off", config="disk-certified", status="input_error", error=long_refusal,
+             stderr_tail="dlf: error: " + long_refusal),
+    ], long_refusal
+
+
+def test_report_lists_only_fold_free_maps_as_valid(tmp_path):
+    rows, long_refusal = table_rows()
+    db = study.open_db(str(tmp_path / "t.sqlite"))
+    for r in rows:
+        study.insert_row(db, r)
+    summary = study.summary_markdown(db)
+    valid = summary[summary.index("Valid maps"):summary.index("Maps written with inverted")]
+    assert "| disk-certified | 2 | 1 |" in valid
+    assert "| disk-paper | 1 | 1 | 2.002 | 2.002 |" in valid  # c.off alone: a.off folds 373, b.off's map 2 faces
+    folded = summary[summary.index("Maps written with inverted"):]
+    assert "| a.off | disk-paper | ok | 373 |" in folded and "| b.off | disk-paper | ok | 2 |" in folded
+    # The refusal in full, on one line, its pipe escaped.
+    assert " ".join(long_refusal.split()).replace("|", "/") in summary
+    assert study.box_labels(["disk-certified", "disk-paper"], [[0.1, 0.2], [0.3]]) == \
+        ["disk-certified\nn = 2", "disk-paper\nn = 1"]
+
+
+def test_export_csv(tmp_path):
+    import csv
+    rows, long_refusal = table_rows()
+    path = tmp_path / "t.sqlite"
+    db = study.open_db(str(path))
+    for r in rows:
+        study.insert_row(db, r)
+    db.close()
+    out = tmp_path / "runs.csv"
+    p = subprocess.run([sys.executable, "-m", "discrete_lie_flow.study", "export", str(path), "--csv", str(out)],
+                       capture_output=True, text=True, timeout=60)
+    assert p.returncode == 0 and f"wrote {out} (6 runs)" in p.stdout, p.stderr
+    table = list(csv.reader(open(out, newline="")))
+    assert tuple(table[0]) == study.EXPORT_COLUMNS and "report" not in table[0]
+    got = [dict(zip(table[0], r)) for r in table[1:]]
+    assert [(g["config"], g["mesh"]) for g in got] == sorted((r["config"], r["mesh"]) for r in rows)
+    by_key = {(g["mesh"], g["config"]): g for g in got}
+    assert by_key[("a.off", "disk-paper")]["inverted_faces"] == "373"
+    assert float(by_key[("a.off", "disk-certified")]["d_area"]) == 2.004
+    assert by_key[("x.off", "disk-certified")]["error"] == long_refusal  # whole, with its pipe, quoted
+    assert by_key[("x.off", "disk-certified")]["d_area"] == ""           # null
+    # No database, or no such folder: an error, no file.
+    p = subprocess.run([sys.executable, "-m", "discrete_lie_flow.study", "export", str(path), "--csv",
+                        str(tmp_path / "nowhere" / "r.csv")], capture_output=True, text=True, timeout=60)
+    assert p.returncode != 0 and "does not exist" in p.stderr and not (tmp_path / "nowhere").exists()
+    assert not [f for f in os.listdir(tmp_path) if f.startswith(".")]  # no temporary left

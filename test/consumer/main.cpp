@@ -1,31 +1,22 @@
 // Copyright (c) 2026 The Discrete Lie Flow authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Consumer of an installed Discrete Lie Flow: runs the README's C++ snippet,
-// compiled as is, on a disk mesh and checks what it computed, then checks
+// Consumer of an installed Discrete Lie Flow: runs the README's C++ program,
+// compiled as is, on a disk mesh and checks what it printed, then checks
 // the version macros against the version of the CMake package.
 //
 // Usage: dlf_consumer mesh.off   (a disk-topology triangle mesh)
 
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
+// The README's program first, nothing before it: it must compile with what
+// it includes itself. Its main, renamed readme_main by CMakeLists.txt, is
+// called by the one below.
+#include "readme_program.inc"
 
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
+#include <sstream>
 #include <string>
-
-typedef CGAL::Simple_cartesian<double> Kernel;
-typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
-typedef boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
-typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
-typedef Mesh::Property_map<vertex_descriptor, Kernel::Point_2> UV_map;
-
-// The README's #include lines and namespace alias, nothing else before the
-// snippet: it must compile with what it includes itself.
-#include "readme_snippet_head.inc"
 
 static int failures = 0;
 
@@ -35,20 +26,8 @@ static void check(bool ok, const std::string& what)
   if(!ok) ++failures;
 }
 
-static void run_readme_snippet(Mesh& mesh, halfedge_descriptor bhd, UV_map uvmap)
-{
-#include "readme_snippet_body.inc"
-  check(err == SMP::OK, err == SMP::OK ? std::string("parameterize() returns OK")
-                                        : std::string("parameterize() returns OK, not ") +
-                                            SMP::discrete_lie_flow_error_name(err) + ": " + dlf.report().message);
-  check(dlf.report().status == SMP::OK, "report status OK");
-  check(dlf.report().iterations > 0, "the flow ran (" + std::to_string(dlf.report().iterations) + " iterations)");
-  check(dlf.report().final_d_area <= 2.01, "final d_area " + std::to_string(dlf.report().final_d_area) + " <= 2.01");
-  check(dlf.report().caller_inverted_faces == 0, "no inverted triangle");
-}
-
-// Every public header, after the snippet so that it cannot supply what the
-// snippet forgot; a header missing from the install fails the build here.
+// Every public header, after the program so that it cannot supply what the
+// program forgot; a header missing from the install fails the build here.
 #include "all_public_headers.inc"
 
 static_assert(DISCRETE_LIE_FLOW_VERSION_MAJOR == DLF_EXPECTED_MAJOR &&
@@ -71,21 +50,25 @@ int main(int argc, char** argv)
   check(std::strcmp(DISCRETE_LIE_FLOW_VERSION_STR, DLF_EXPECTED_VERSION) == 0,
         std::string("DISCRETE_LIE_FLOW_VERSION_STR ") + DISCRETE_LIE_FLOW_VERSION_STR + " == package version " +
           DLF_EXPECTED_VERSION);
-
-  Mesh mesh;
-  if(!CGAL::Polygon_mesh_processing::IO::read_polygon_mesh(argv[1], mesh) || faces(mesh).empty()) {
-    std::cerr << "dlf_consumer: cannot read a mesh from " << argv[1] << std::endl;
-    return EXIT_FAILURE;
-  }
-  const halfedge_descriptor bhd = CGAL::Polygon_mesh_processing::longest_border(mesh).first;
-  if(bhd == boost::graph_traits<Mesh>::null_halfedge()) {
-    std::cerr << "dlf_consumer: " << argv[1] << " has no border (a disk is needed)" << std::endl;
-    return EXIT_FAILURE;
-  }
-  UV_map uvmap = mesh.add_property_map<vertex_descriptor, Kernel::Point_2>("v:uv").first;
-  std::cout << argv[1] << ": " << num_faces(mesh) << " faces, DiscreteLieFlow " << DISCRETE_LIE_FLOW_VERSION_STR
+  std::cout << argv[1] << ": DiscreteLieFlow " << DISCRETE_LIE_FLOW_VERSION_STR
             << (DLF_EXPECT_CHOLMOD ? " with CHOLMOD" : "") << std::endl;
-  run_readme_snippet(mesh, bhd, uvmap);
+
+  // The README's program on the mesh, what it prints captured:
+  // "converged, d_area D".
+  std::ostringstream printed;
+  std::streambuf* const cout_buffer = std::cout.rdbuf(printed.rdbuf());
+  char name[] = "flatten";
+  char* args[] = { name, argv[1], nullptr };
+  const int code = readme_main(2, args);
+  std::cout.rdbuf(cout_buffer);
+  std::string line = printed.str();
+  if(!line.empty() && line.back() == '\n') line.pop_back();
+  check(code == 0, "the README's program exits with " + std::to_string(code) + " (0 expected)");
+  const std::string prefix = "converged, d_area ";
+  const bool converged = line.compare(0, prefix.size(), prefix) == 0;
+  check(converged, "it prints '" + prefix + "D': " + line);
+  const double d_area = converged ? std::strtod(line.c_str() + prefix.size(), nullptr) : 0;
+  check(d_area >= 2 && d_area <= 2.01, "its d_area " + std::to_string(d_area) + " is in [2, 2.01]");
   std::cout << (failures == 0 ? "dlf_consumer: all checks passed" : "dlf_consumer: checks FAILED") << std::endl;
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -198,6 +198,7 @@ void print_main_help(std::ostream& out)
 
 std::string Region_option::name() const
 {
+  if(!label.empty()) return label;
   if(!selection_file.empty()) return "roi " + selection_file;
   std::ostringstream s;
   s << "roi-ball " << ball[0] << ' ' << ball[1] << ' ' << ball[2] << ' ' << ball[3];
@@ -264,6 +265,8 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
      "a mesh with holes (genus 0, several border loops): the loop that goes to the border, counted from 0 "
      "in the order of 'dlf info' (longest first, by 3D length); the others are holes and float")
     ("report", po::value<std::string>(&s.report)->value_name("R.json"), "write a JSON report (status, metrics, timings)")
+    ("csv", po::value<std::string>(&s.csv)->value_name("R.csv"),
+     "write the report as CSV: a header and one row, the JSON report's keys flattened (final.d_area, seconds.flow)")
     ("domain-mesh", po::value<std::string>(&s.domain_mesh)->value_name("DOMAIN.obj"),
      "write the final domain triangulation (differs from the input's in paper mode)")
     ("svg", po::value<std::string>(&s.svg)->value_name("LAYOUT.svg"),
@@ -387,11 +390,13 @@ bool parse_score_arguments(const std::vector<std::string>& args, Score_settings&
   o.add_options()
     ("help,h", "show this help")
     ("report", po::value<std::string>(&s.report)->value_name("R.json"), "write the metrics as JSON")
+    ("csv", po::value<std::string>(&s.csv)->value_name("R.csv"),
+     "write the same as CSV: a header and one row, the JSON's keys flattened (metrics.d_area)")
     ("quiet,q", "print nothing on success")
     ("verbose,v", "same as the default");
   const po::variables_map vm = parse("score", args, o, "files");
   if(vm.count("help")) {
-    std::cout << "Usage: dlf score [MESH] PARAM.obj [--report R.json]\n\n"
+    std::cout << "Usage: dlf score [MESH] PARAM.obj [--report R.json] [--csv R.csv]\n\n"
                  "Distortion metrics (d_area, arap, symmetric Dirichlet, log area ratio, inverted and\n"
                  "degenerate faces, smallest angle, the paper's Table 1 'Wasserstein distance' and\n"
                  "Area_total of the faces' area shares, Beltrami coefficient |mu|) of the map of MESH's\n"

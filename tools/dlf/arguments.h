@@ -27,6 +27,8 @@ struct Region_option
 {
   std::string selection_file;       ///< `--roi`: a CGAL selection file; empty for a ball
   std::array<double, 4> ball{};     ///< `--roi-ball`: centre x, y, z and radius
+  std::vector<int> faces;           ///< the Python module's face indices (increasing); then neither of the above
+  std::string label;                ///< the Python module's name of the region; empty: from the above
   double factor = 1;
   std::string name() const;         ///< as the command line gave it, for messages and the report
 };
@@ -40,7 +42,9 @@ struct Disk_settings
 {
   std::string input;
   std::string seam;                             ///< `--seam`: a CGAL selection file; empty: no cut
+  std::vector<long> seam_pairs;                 ///< the Python module's seam edges (a0 b0 a1 b1 ...); then `seam` names them
   std::string output, report, domain_mesh, svg; ///< empty: not written
+  std::string csv;                              ///< `--csv`: the report as one CSV row
   std::string convergence_svg, histogram_svg;   ///< `--plot-convergence`, `--plot-histogram`
   std::string texture_obj;                      ///< `--texture`: NAME.obj, with NAME.mtl and NAME.png
   int texture_size = 1024;                      ///< `--texture-size`: pixels a side
@@ -62,7 +66,7 @@ struct Disk_settings
 
 struct Score_settings
 {
-  std::string mesh, parameterization, report;
+  std::string mesh, parameterization, report, csv;
   Verbosity verbosity = Verbosity::NORMAL;
 };
 

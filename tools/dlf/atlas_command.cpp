@@ -12,6 +12,7 @@
 
 #include "cli_error.h"
 #include "commands.h"
+#include "output_files.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
@@ -51,6 +52,7 @@ const char* atlas_help =
   "Options:\n"
   "  -o, --output OUT.obj   the atlas: the file's v lines in order, vt per chart vertex, f v/vt\n"
   "  --report R.json        the report (charts, seam length, packing, D_area, repairs, checks)\n"
+  "  --csv R.csv            the report as CSV: a header and one row, its keys flattened\n"
   "  --border square|circle the charts' border (default square: fills its cell)\n"
   "  --tips K               tips a closed component's seam runs through (default 2)\n"
   "  --gutter G             space around each chart, uv units (default 1/1024)\n"
@@ -62,7 +64,7 @@ const char* atlas_help =
 
 struct Atlas_args
 {
-  std::string input, output, report;
+  std::string input, output, report, csv;
   SMP::Discrete_lie_flow_atlas_options options;
   bool quiet = false;
 };
@@ -87,6 +89,7 @@ Atlas_args parse(const std::vector<std::string>& args)
     if(s == "-h" || s == "--help") { std::cout << atlas_help; std::exit(EXIT_OK); }
     else if(s == "-o" || s == "--output") a.output = value(i);
     else if(s == "--report") a.report = value(i);
+    else if(s == "--csv") a.csv = value(i);
     else if(s == "--border") {
       const std::string& b = value(i);
       if(b != "square" && b != "circle") throw Cli_error("atlas: --border is square or circle, not '" + b + "'");
@@ -247,7 +250,7 @@ int atlas_command(const std::vector<std::string>& args)
     std::ofstream out(a.output);
     if(!(out << obj.str())) throw Cli_error("atlas: cannot write " + a.output);
   }
-  if(!a.report.empty()) {
+  if(!a.report.empty() || !a.csv.empty()) {
     nlohmann::json j;
     j["input"] = a.input;
     j["vertices_in_file"] = file_vertices;
@@ -282,8 +285,15 @@ int atlas_command(const std::vector<std::string>& args)
                          { "stop_reason", SMP::discrete_lie_flow_stop_reason_name(c.stop_reason) },
                          { "three_border_corner_faces", c.three_border_corner_faces } });
     j["chart_list"] = charts;
-    std::ofstream out(a.report);
-    if(!(out << j.dump(2) << "\n")) throw Cli_error("atlas: cannot write " + a.report);
+    if(!a.report.empty()) {
+      std::ofstream out(a.report);
+      if(!(out << j.dump(2) << "\n")) throw Cli_error("atlas: cannot write " + a.report);
+    }
+    if(!a.csv.empty()) {
+      std::ofstream out(a.csv);
+      write_csv_report(out, nlohmann::ordered_json::parse(j.dump()));
+      if(!out) throw Cli_error("atlas: cannot write " + a.csv);
+    }
   }
   if(!a.quiet)
     std::cerr << "dlf: atlas: " << r.charts << " charts, seam " << r.seam_length << ", packing efficiency "

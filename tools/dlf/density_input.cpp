@@ -160,7 +160,9 @@ Density_setup make_density(const Indexed_mesh& mesh, const Disk_settings& s)
     Density_region region;
     region.name = r.name();
     region.factor = r.factor;
-    region.faces = r.selection_file.empty() ? ball_faces(sm, r.ball) : read_selection(r.selection_file, mesh);
+    region.faces = !r.faces.empty()                 ? r.faces
+                 : r.selection_file.empty()         ? ball_faces(sm, r.ball)
+                                                    : read_selection(r.selection_file, mesh);
     if(region.faces.empty())
       throw Cli_error("--" + region.name + ": no face has its centroid in this ball");
     std::vector<face_descriptor> fs;

@@ -113,14 +113,6 @@ json seam_json(const Disk_settings& s, const Seam_cut& cut)
   return j;
 }
 
-// The command's own time around the library's run: reading the input,
-// checking it (topology, density, the metrics of a failed run), writing the
-// -o map. Zero where no file is read or written (the Python module).
-struct Io_seconds
-{
-  double read = 0, check = 0, write = 0;
-};
-
 double seconds_since(std::chrono::steady_clock::time_point t0)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -128,8 +120,8 @@ double seconds_since(std::chrono::steady_clock::time_point t0)
 
 json make_report(const Disk_settings& s, const Indexed_mesh& input, const Seam_cut& cut,
                  const std::vector<Border_loop>& loops, const Disk_run& run,
-                 const Metrics* initial, const Metrics* final_metrics, const Density_setup& density, double picture_seconds,
-                 const Io_seconds& io = Io_seconds())
+                 const Metrics* initial, const Metrics* final_metrics, const Density_setup& density,
+                 const Command_seconds& io = Command_seconds())
 {
   const SMP::Discrete_lie_flow_report& R = run.report;
   json j;
@@ -140,9 +132,7 @@ json make_report(const Disk_settings& s, const Indexed_mesh& input, const Seam_c
   j["faces"] = input.faces.size();
   j["iterations"] = R.iterations;
   j["stop_reason"] = SMP::discrete_lie_flow_stop_reason_name(R.stop_reason);
-  j["seconds"] = { { "read", io.read }, { "check", io.check }, { "initial", R.seconds_initial },
-                   { "flow", R.seconds_flow }, { "total", run.seconds }, { "write", io.write },
-                   { "pictures", picture_seconds } };
+  j["seconds"] = seconds_json(io, R.seconds_initial, R.seconds_flow, run.seconds);
   j["initial"] = initial ? metrics_to_json(*initial) : json(nullptr);
   j["final"] = final_metrics ? metrics_to_json(*final_metrics) : json(nullptr);
   j["mode"] = s.mode;
@@ -276,7 +266,10 @@ Disk_outcome compute_disk(const Indexed_mesh& input, Disk_settings& s, const std
   // With seams, the flow maps the input cut open (one vertex per seam side),
   // which must pass the check of an uncut input; densities and regions are
   // the input's (faces keep their order).
-  if(!s.seam.empty()) o.cut = read_and_cut(input, s.input, s.seam, check_disk_topology);
+  if(!s.seam.empty())
+    o.cut = s.seam_pairs.empty()
+              ? read_and_cut(input, s.input, s.seam, check_disk_topology)
+              : checked_cut(input, s.input, seam_selection_of_pairs(s.seam_pairs, input, s.seam), s.seam, check_disk_topology);
   const Indexed_mesh& mesh = mapped_mesh(input, s, o);
   o.loops = check_disk_topology(mesh, s.input);
   const std::vector<Border_loop>& loops = o.loops;
@@ -316,9 +309,9 @@ Disk_outcome compute_disk(const Indexed_mesh& input, Disk_settings& s, const std
   return o;
 }
 
-json disk_report(const Disk_settings& s, const Indexed_mesh& input, const Disk_outcome& o, double picture_seconds)
+json disk_report(const Disk_settings& s, const Indexed_mesh& input, const Disk_outcome& o)
 {
-  return make_report(s, input, o.cut, o.loops, o.run, o.initial_ptr(), o.final_ptr(), o.density, picture_seconds);
+  return make_report(s, input, o.cut, o.loops, o.run, o.initial_ptr(), o.final_ptr(), o.density);
 }
 
 Cli_error disk_failure(const Disk_settings& s, const Indexed_mesh& input, const Disk_outcome& o)
@@ -338,8 +331,9 @@ int disk_command(const std::vector<std::string>& args)
   if(!s.domain_mesh.empty()) outputs.declare(s.domain_mesh, "--domain-mesh");
   declare_pictures(outputs, s);
   if(!s.report.empty()) outputs.declare(s.report, "--report");
+  if(!s.csv.empty()) outputs.declare(s.csv, "--csv");
 
-  Io_seconds io;
+  Command_seconds io;
   auto t0 = std::chrono::steady_clock::now();
   const Indexed_mesh input = read_triangle_mesh(s.input);
   io.read = seconds_since(t0);
@@ -394,11 +388,11 @@ int disk_command(const std::vector<std::string>& args)
     }
     picture_timings = write_pictures(outputs, s, mesh, run, density, comment.str(), &input);
   }
-  if(!s.report.empty()) {
-    double picture_seconds = 0;
-    for(const auto& p : picture_timings) picture_seconds += p.second;
-    const json report = make_report(s, input, cut, loops, run, initial_ptr, final_ptr, density, picture_seconds, io);
-    outputs.write(s.report, [&](std::ostream& o) { o << report.dump(2) << '\n'; });
+  for(const auto& p : picture_timings) io.pictures += p.second;
+  if(!s.report.empty() || !s.csv.empty()) {
+    const json report = make_report(s, input, cut, loops, run, initial_ptr, final_ptr, density, io);
+    if(!s.report.empty()) outputs.write(s.report, [&](std::ostream& o) { o << report.dump(2) << '\n'; });
+    if(!s.csv.empty()) outputs.write(s.csv, [&](std::ostream& o) { write_csv_report(o, report); });
   }
   outputs.commit();
 

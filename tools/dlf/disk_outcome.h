@@ -52,8 +52,7 @@ inline const Indexed_mesh& mapped_mesh(const Indexed_mesh& input, const Disk_set
 }
 
 /// The JSON report of doc/design.md ("dlf disk --report").
-nlohmann::ordered_json disk_report(const Disk_settings& settings, const Indexed_mesh& input, const Disk_outcome& outcome,
-                                   double picture_seconds);
+nlohmann::ordered_json disk_report(const Disk_settings& settings, const Indexed_mesh& input, const Disk_outcome& outcome);
 
 /// The error of a failed run (`!outcome.ok`): its message and exit code.
 Cli_error disk_failure(const Disk_settings& settings, const Indexed_mesh& input, const Disk_outcome& outcome);

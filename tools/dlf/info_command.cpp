@@ -46,12 +46,15 @@ const char* info_help =
   "degeneracies: vertices (unreferenced, duplicate positions, non-finite; duplicates\n"
   "on the border are the two sides of a seam, fine for 'dlf disk'), faces\n"
   "(triangles or not), edges (border, non-manifold, inconsistently oriented),\n"
-  "connected components, border loops (each with its length and vertex count,\n"
-  "longest first: the order of 'dlf disk --outer-loop'), Euler characteristic\n"
-  "and genus, non-manifold vertices, degenerate and zero-area faces, the\n"
-  "smallest angle, the bounding box; and which command fits: 'dlf disk' (a\n"
+  "connected components (each with its faces, border loops, Euler characteristic,\n"
+  "genus and area, largest first), border loops (each with its length and vertex\n"
+  "count, longest first: the order of 'dlf disk --outer-loop'), Euler\n"
+  "characteristic and genus, non-manifold vertices, degenerate and zero-area\n"
+  "faces, the smallest angle, the surface area (polygons too: angles about each\n"
+  "polygon's normal), the bounding box; and which command fits: 'dlf disk' (a\n"
   "topological disk, or a genus-0 mesh with holes), 'dlf sphere' (closed,\n"
-  "genus 0), or neither, and why.\n"
+  "genus 0), or neither, and why; and whether 'dlf atlas' takes it (any mesh\n"
+  "with finite coordinates: several components, any genus, polygons).\n"
   "\n"
   "Exit status: 0 when MESH was read (whatever it is), 1 otherwise.\n"
   "\n"
@@ -59,6 +62,22 @@ const char* info_help =
   "  dlf info face.off\n"
   "  dlf info scan.ply --report scan_info.json\n";
 
+
+/// One connected component: its counts, and its topology where defined.
+struct Component_info
+{
+  std::size_t vertices = 0, edges = 0, faces = 0, border_loops = 0;
+  bool manifold = true, orientable = true;
+  double area = 0;
+  long euler() const { return long(vertices) - long(edges) + long(faces); }
+  /// χ = 2 − 2g − b for a connected orientable manifold; −1 otherwise.
+  long genus() const
+  {
+    if(!manifold || !orientable) return -1;
+    const long twice = 2 - euler() - long(border_loops);
+    return twice >= 0 && twice % 2 == 0 ? twice / 2 : -1;
+  }
+};
 
 struct Mesh_info
 {
@@ -68,7 +87,9 @@ struct Mesh_info
   std::size_t components = 0, border_loops = 0, non_manifold_vertices = 0;
   std::size_t repeated_vertex_faces = 0, zero_area_faces = 0, faces_below_1_degree = 0;
   long euler = 0;
-  double min_angle_degrees = 180, area = 0;
+  std::size_t measured_faces = 0; ///< faces with an area and angles (no repeated vertex)
+  double min_angle_degrees = 360, area = 0;
+  std::vector<Component_info> parts; ///< largest first (faces), then by smallest vertex
   std::array<double, 3> lo{ { 0, 0, 0 } }, hi{ { 0, 0, 0 } };
   bool manifold() const { return non_manifold_edges == 0 && non_manifold_vertices == 0; }
   bool orientable() const { return misoriented_edges == 0; }
@@ -76,13 +97,17 @@ struct Mesh_info
   {
     return triangles == faces && unreferenced == 0 && non_finite == 0 && repeated_vertex_faces == 0 && manifold();
   }
-  /// Genus of a connected orientable manifold: χ = 2 − 2g − b; −1 if unknown.
-  long genus() const
+  /// Genus of a connected orientable manifold (polygons too): χ = 2 − 2g − b; −1 if undefined.
+  long genus() const { return parts.size() == 1 ? parts[0].genus() : -1; }
+  /// Why the genus is undefined, for the text.
+  std::string no_genus() const
   {
-    if(components != 1 || !manifold() || triangles != faces) return -1;
-    const long twice = 2 - euler - long(border_loops);
-    return twice >= 0 && twice % 2 == 0 ? twice / 2 : -1;
+    if(parts.size() != 1) return "n/a (" + std::to_string(parts.size()) + " components: each below)";
+    if(!parts[0].manifold) return "n/a (not manifold)";
+    if(!parts[0].orientable) return "n/a (not orientable)";
+    return "n/a (Euler characteristic and border loops disagree with any genus)";
   }
+  bool has_angles() const { return measured_faces > 0; }
 };
 
 // The smallest angle (radians) of a triangle; π for a flat one with a repeated point.
@@ -97,6 +122,49 @@ double min_angle(const Point_3& a, const Point_3& b, const Point_3& c)
     m = std::min(m, std::acos(std::max(-1., std::min(1., (u * v) / (nu * nv)))));
   }
   return m;
+}
+
+// Area, smallest interior angle (degrees) and zero area of a polygon
+// without a repeated vertex. The area is the norm of the vector area (the
+// area of a planar polygon, convex or not); each corner's angle is measured
+// around that normal, so a reflex corner counts as more than 180 degrees.
+// Triangles use the exact collinearity test and the plain angles.
+struct Polygon_measure { double area = 0, min_angle = 360; bool zero_area = false; };
+
+Polygon_measure measure_polygon(const std::vector<Point_3>& points, const Polygon& p)
+{
+  Polygon_measure r;
+  const std::size_t n = p.size();
+  const Point_3& o = points[p[0]];
+  if(n == 3) {
+    const Point_3 &a = points[p[0]], &b = points[p[1]], &c = points[p[2]];
+    r.zero_area = CGAL::collinear(a, b, c);
+    r.area = std::sqrt(CGAL::squared_area(a, b, c));
+    r.min_angle = min_angle(a, b, c) * 180 / M_PI;
+    return r;
+  }
+  Epick::Vector_3 normal(0, 0, 0);
+  r.zero_area = true;
+  for(std::size_t k = 1; k + 1 < n; ++k) {
+    normal = normal + CGAL::cross_product(points[p[k]] - o, points[p[k + 1]] - o);
+    r.zero_area = r.zero_area && CGAL::collinear(o, points[p[k]], points[p[k + 1]]);
+  }
+  const double twice = std::sqrt(normal.squared_length());
+  r.area = twice / 2;
+  for(std::size_t k = 0; k < n; ++k) {
+    const Point_3& at = points[p[k]];
+    const Epick::Vector_3 next = points[p[(k + 1) % n]] - at, previous = points[p[(k + n - 1) % n]] - at;
+    double angle;
+    if(twice > 0) { // from the next edge to the previous one, counterclockwise about the normal
+      angle = std::atan2(CGAL::cross_product(next, previous) * normal / twice, next * previous);
+      if(angle < 0) angle += 2 * M_PI;
+    } else {
+      const double nn = std::sqrt(next.squared_length()), np = std::sqrt(previous.squared_length());
+      angle = nn == 0 || np == 0 ? 0 : std::acos(std::max(-1., std::min(1., (next * previous) / (nn * np))));
+    }
+    r.min_angle = std::min(r.min_angle, angle * 180 / M_PI);
+  }
+  return r;
 }
 
 Mesh_info analyse(const std::vector<Point_3>& points, const std::vector<Polygon>& polygons)
@@ -134,6 +202,7 @@ Mesh_info analyse(const std::vector<Point_3>& points, const std::vector<Polygon>
   std::vector<std::size_t> corner_start(polygons.size() + 1, 0);
   for(std::size_t f = 0; f < polygons.size(); ++f) corner_start[f + 1] = corner_start[f] + polygons[f].size();
   Union_find components(V), fans(corner_start.back());
+  std::vector<double> face_area(polygons.size(), 0);
   for(std::size_t f = 0; f < polygons.size(); ++f) {
     const Polygon& p = polygons[f];
     const std::size_t n = p.size();
@@ -148,13 +217,14 @@ Mesh_info analyse(const std::vector<Point_3>& points, const std::vector<Polygon>
     for(std::size_t j = 0; j < n && !repeated; ++j)
       for(std::size_t k = j + 1; k < n; ++k) repeated = repeated || p[j] == p[k];
     if(repeated) { ++m.repeated_vertex_faces; continue; }
-    if(n != 3) continue;
-    const Point_3 &a = points[p[0]], &b = points[p[1]], &c = points[p[2]];
-    if(CGAL::collinear(a, b, c)) ++m.zero_area_faces;
-    m.area += std::sqrt(CGAL::squared_area(a, b, c));
-    const double angle = min_angle(a, b, c) * 180 / M_PI;
-    m.min_angle_degrees = std::min(m.min_angle_degrees, angle);
-    if(angle < 1) ++m.faces_below_1_degree;
+    if(n < 3) continue;
+    const Polygon_measure q = measure_polygon(points, p);
+    ++m.measured_faces;
+    if(q.zero_area) ++m.zero_area_faces;
+    face_area[f] = q.area;
+    m.area += q.area;
+    m.min_angle_degrees = std::min(m.min_angle_degrees, q.min_angle);
+    if(q.min_angle < 1) ++m.faces_below_1_degree;
   }
   for(std::size_t i = 0; i < V; ++i)
     if(used[i] && components.find(i) == i) ++m.components;
@@ -163,7 +233,29 @@ Mesh_info analyse(const std::vector<Point_3>& points, const std::vector<Polygon>
   // Border edges, for the loops: a graph on vertices, one component per loop
   // when the border is manifold.
   Union_find border(V);
-  std::vector<bool> on_border(V, false);
+  std::vector<bool> on_border(V, false), non_manifold_vertex(V, false);
+  // Orientability: two faces across a manifold edge that run it the same
+  // way must be flipped relative to each other; a cycle with an odd number
+  // of flips (a Möbius strip) makes the component non-orientable.
+  std::vector<std::size_t> face_parent(polygons.size());
+  std::vector<char> flip_to_parent(polygons.size(), 0);
+  std::iota(face_parent.begin(), face_parent.end(), std::size_t(0));
+  auto root = [&](std::size_t f, char& flip) { // with path compression, the flips kept
+    std::size_t r = f;
+    flip = 0;
+    while(face_parent[r] != r) { flip ^= flip_to_parent[r]; r = face_parent[r]; }
+    char to_root = flip;
+    while(face_parent[f] != r && f != r) {
+      const std::size_t up = face_parent[f];
+      const char next = char(to_root ^ flip_to_parent[f]);
+      face_parent[f] = r;
+      flip_to_parent[f] = to_root;
+      f = up;
+      to_root = next;
+    }
+    return r;
+  };
+  std::vector<bool> non_orientable_root(polygons.size(), false);
   for(std::size_t k = 0; k < sides.size(); ) {
     std::size_t e = k + 1;
     while(e < sides.size() && sides[e].a == sides[k].a && sides[e].b == sides[k].b) ++e;
@@ -175,8 +267,19 @@ Mesh_info analyse(const std::vector<Point_3>& points, const std::vector<Polygon>
       on_border[sides[k].a] = on_border[sides[k].b] = true;
     } else if(count > 2) {
       ++m.non_manifold_edges;
+      non_manifold_vertex[sides[k].a] = non_manifold_vertex[sides[k].b] = true;
     } else {
       if(sides[k].forward == sides[k + 1].forward) ++m.misoriented_edges;
+      char fs, ft;
+      const std::size_t rs = root(sides[k].face, fs), rt = root(sides[k + 1].face, ft);
+      const char flip = sides[k].forward == sides[k + 1].forward ? 1 : 0;
+      if(rs != rt) {
+        face_parent[rs] = rt;
+        flip_to_parent[rs] = char(fs ^ ft ^ flip);
+        if(non_orientable_root[rs]) non_orientable_root[rt] = true;
+      } else if((fs ^ ft) != flip) {
+        non_orientable_root[rs] = true;
+      }
       // The two faces are one fan at either end: join the corners there.
       const Side &s = sides[k], &t = sides[k + 1];
       const std::size_t s_at_a = s.forward ? s.corner_a : s.corner_b, s_at_b = s.forward ? s.corner_b : s.corner_a;
@@ -205,7 +308,47 @@ Mesh_info analyse(const std::vector<Point_3>& points, const std::vector<Polygon>
       if(first_fan[v] == std::size_t(-1)) first_fan[v] = fan;
       else if(first_fan[v] != fan && !counted[v]) { counted[v] = true; ++m.non_manifold_vertices; }
     }
-  if(m.triangles == 0) m.min_angle_degrees = 0;
+  for(std::size_t v = 0; v < V; ++v)
+    if(counted[v]) non_manifold_vertex[v] = true;
+
+  // Per component (by the union-find of its vertices): counts, border
+  // loops, manifold and orientable.
+  std::vector<std::size_t> part_of(V, std::size_t(-1));
+  for(std::size_t i = 0; i < V; ++i)
+    if(used[i] && components.find(i) == i) { part_of[i] = m.parts.size(); m.parts.emplace_back(); }
+  std::vector<std::size_t> smallest_vertex(m.parts.size(), V);
+  for(std::size_t i = 0; i < V; ++i) {
+    if(!used[i]) continue;
+    const std::size_t c = part_of[components.find(i)];
+    Component_info& part = m.parts[c];
+    ++part.vertices;
+    smallest_vertex[c] = std::min(smallest_vertex[c], i);
+    if(non_manifold_vertex[i]) part.manifold = false;
+    if(on_border[i] && border.find(i) == i) ++part.border_loops;
+  }
+  for(std::size_t k = 0; k < sides.size(); ) {
+    std::size_t e = k + 1;
+    while(e < sides.size() && sides[e].a == sides[k].a && sides[e].b == sides[k].b) ++e;
+    ++m.parts[part_of[components.find(sides[k].a)]].edges;
+    k = e;
+  }
+  for(std::size_t f = 0; f < polygons.size(); ++f) {
+    if(polygons[f].empty()) continue;
+    Component_info& part = m.parts[part_of[components.find(polygons[f][0])]];
+    ++part.faces;
+    part.area += face_area[f];
+    char flip;
+    if(non_orientable_root[root(f, flip)]) part.orientable = false;
+  }
+  // Largest first, then by smallest vertex: a stable order for text and JSON.
+  std::vector<std::size_t> order(m.parts.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
+    return m.parts[x].faces != m.parts[y].faces ? m.parts[x].faces > m.parts[y].faces : smallest_vertex[x] < smallest_vertex[y];
+  });
+  std::vector<Component_info> sorted;
+  for(std::size_t c : order) sorted.push_back(m.parts[c]);
+  m.parts.swap(sorted);
   return m;
 }
 
@@ -232,13 +375,35 @@ std::string verdict(const Mesh_info& m, std::string& reason)
   if(problems.empty() && disk) return "dlf disk";
   if(problems.empty() && sphere) return "dlf sphere";
   if(problems.empty()) {
-    if(m.border_loops == 0) problems.push_back("closed surface of genus " + std::to_string(g) + " (cut it open into a disk)");
-    else problems.push_back("genus " + std::to_string(g) + " with " + count(m.border_loops, "border loop", "border loops") +
-                            " (cut it into a disk)");
+    const std::string genus = g >= 0 ? "genus " + std::to_string(g) : "Euler characteristic " + std::to_string(m.euler);
+    if(m.border_loops == 0) problems.push_back("closed surface of " + genus + " (cut it open into a disk)");
+    else problems.push_back(genus + " with " + count(m.border_loops, "border loop", "border loops") + " (cut it into a disk)");
   }
   for(std::size_t k = 0; k < problems.size(); ++k) reason += (k ? "; " : "") + problems[k];
   return "none";
 }
+
+// Whether `dlf atlas` takes the mesh, and what it does to it first: it
+// triangulates polygons, splits non-manifold vertices, drops zero-area and
+// repeated-vertex faces, cuts closed and higher-genus components into disks.
+bool atlas_fits(const Mesh_info& m, std::string& note)
+{
+  if(m.non_finite) { note = count(m.non_finite, "vertex", "vertices") + " with non-finite coordinates"; return false; }
+  if(m.measured_faces == m.zero_area_faces) { note = "every face has zero area"; return false; }
+  std::vector<std::string> what;
+  if(m.components > 1) what.push_back("each of the " + std::to_string(m.components) + " components");
+  if(m.triangles != m.faces) what.push_back("polygons triangulated");
+  if(!m.manifold()) what.push_back("non-manifold vertices split");
+  if(m.zero_area_faces + m.repeated_vertex_faces) what.push_back("degenerate faces dropped");
+  bool cut = false;
+  for(const Component_info& c : m.parts) cut = cut || c.genus() > 0 || c.border_loops == 0;
+  if(cut) what.push_back("closed or higher-genus parts cut into disks");
+  for(std::size_t k = 0; k < what.size(); ++k) note += (k ? ", " : "") + what[k];
+  if(note.empty()) note = "as it is";
+  return true;
+}
+
+json genus_json(long g) { return g >= 0 ? json(g) : json(nullptr); }
 
 json info_json(const std::string& path, const Mesh_info& m, const std::vector<Border_loop>& loops, const std::string& fits,
                const std::string& reason)
@@ -257,23 +422,37 @@ json info_json(const std::string& path, const Mesh_info& m, const std::vector<Bo
   j["non_manifold_edges"] = m.non_manifold_edges;
   j["inconsistently_oriented_edges"] = m.misoriented_edges;
   j["connected_components"] = m.components;
+  json parts = json::array(); // largest first
+  for(const Component_info& c : m.parts)
+    parts.push_back({ { "faces", c.faces }, { "vertices", c.vertices }, { "edges", c.edges },
+                      { "border_loops", c.border_loops }, { "euler_characteristic", c.euler() },
+                      { "genus", genus_json(c.genus()) }, { "manifold", c.manifold }, { "orientable", c.orientable },
+                      { "area", c.area } });
+  j["components"] = parts;
   j["border_loops"] = m.border_loops;
   json list = json::array();
   for(const Border_loop& l : loops) list.push_back({ { "length", l.length }, { "vertices", l.vertices.size() } });
   j["loops"] = list; // longest first: the order of dlf disk --outer-loop
   j["euler_characteristic"] = m.euler;
-  j["genus"] = m.genus() >= 0 ? json(m.genus()) : json(nullptr);
+  j["genus"] = genus_json(m.genus());
   j["non_manifold_vertices"] = m.non_manifold_vertices;
   j["faces_repeating_a_vertex"] = m.repeated_vertex_faces;
   j["zero_area_faces"] = m.zero_area_faces;
-  j["min_angle_degrees"] = m.min_angle_degrees;
+  // Polygons too: interior angles about each polygon's normal.
+  j["min_angle_degrees"] = m.has_angles() ? json(m.min_angle_degrees) : json(nullptr);
   j["faces_below_1_degree"] = m.faces_below_1_degree;
   j["area"] = m.area;
   j["bounding_box"] = { { "min", m.lo }, { "max", m.hi } };
   j["fits"] = fits;
   j["reason"] = reason;
+  std::string note;
+  j["atlas_fits"] = atlas_fits(m, note);
+  j["atlas_note"] = note;
   return j;
 }
+
+/// Components listed one per line in the text (the report lists all).
+constexpr std::size_t listed_components = 10;
 
 void print_info(std::ostream& out, const std::string& path, const Mesh_info& m, const std::vector<Border_loop>& loops,
                 const std::string& fits, const std::string& reason)
@@ -289,28 +468,43 @@ void print_info(std::ostream& out, const std::string& path, const Mesh_info& m, 
       << "  faces                 " << m.faces << " (" << m.triangles << " triangles)\n"
       << "  edges                 " << m.edges << " (" << m.border_edges << " border, " << m.non_manifold_edges
       << " non-manifold, " << m.misoriented_edges << " inconsistently oriented)\n"
-      << "  connected components  " << m.components << "\n"
-      << "  border loops          " << m.border_loops << (m.manifold() ? "" : " (connected sets of border edges)") << "\n";
+      << "  connected components  " << m.components << "\n";
+  // Largest first; the genus where the component is an orientable manifold.
+  for(std::size_t k = 0; k < m.parts.size() && m.parts.size() > 1 && k < listed_components; ++k) {
+    const Component_info& c = m.parts[k];
+    out << "    component " << std::left << std::setw(8) << k << std::right << " " << count(c.faces, "face", "faces") << ", "
+        << count(c.vertices, "vertex", "vertices") << ", " << count(c.border_loops, "border loop", "border loops") << ", Euler characteristic " << c.euler() << ", genus "
+        << (c.genus() >= 0 ? std::to_string(c.genus()) : std::string(!c.manifold ? "n/a (not manifold)"
+                                                                     : !c.orientable ? "n/a (not orientable)" : "n/a"))
+        << ", area " << c.area << "\n";
+  }
+  if(m.parts.size() > listed_components)
+    out << "    ... and " << m.parts.size() - listed_components << " more (--report lists every component)\n";
+  out << "  border loops          " << m.border_loops << (m.manifold() ? "" : " (connected sets of border edges)") << "\n";
   // Longest first: dlf disk --outer-loop K counts them in this order.
   for(std::size_t k = 0; k < loops.size() && loops.size() > 1; ++k)
     out << "    loop " << k << "              length " << loops[k].length << ", " << loops[k].vertices.size() << " vertices"
         << (k == 0 ? " (the outer loop of dlf disk unless --outer-loop)" : "") << "\n";
-  out      << "  Euler characteristic  " << m.euler << "\n"
-      << "  genus                 " << (m.genus() >= 0 ? std::to_string(m.genus()) : std::string("n/a (not one manifold component)"))
-      << "\n"
+  out << "  Euler characteristic  " << m.euler << "\n"
+      << "  genus                 " << (m.genus() >= 0 ? std::to_string(m.genus()) : m.no_genus()) << "\n"
       << "  non-manifold vertices " << m.non_manifold_vertices << "\n"
       << "  degenerate faces      " << m.zero_area_faces << " zero area, " << m.repeated_vertex_faces << " repeating a vertex\n"
-      << "  smallest angle        " << m.min_angle_degrees << " degrees ("
-      << count(m.faces_below_1_degree, "face", "faces") << " below 1 degree)\n"
-      << "  surface area          " << m.area << "\n"
+      << "  smallest angle        ";
+  if(m.has_angles())
+    out << m.min_angle_degrees << " degrees (" << count(m.faces_below_1_degree, "face", "faces") << " below 1 degree)\n";
+  else
+    out << "n/a (every face repeats a vertex)\n";
+  out << "  surface area          " << m.area << "\n"
       << "  bounding box          [" << m.lo[0] << ", " << m.hi[0] << "] x [" << m.lo[1] << ", " << m.hi[1] << "] x ["
       << m.lo[2] << ", " << m.hi[2] << "], diagonal " << diagonal << "\n";
   if(fits == "none") out << "  fits                  neither dlf disk nor dlf sphere: " << reason << "\n";
   else if(fits == "dlf disk" && m.border_loops > 1)
     out << "  fits                  dlf disk (a disk with " << count(m.border_loops - 1, "hole", "holes") << ": they float)\n";
   else out << "  fits                  " << fits << (fits == "dlf disk" ? " (a topological disk)" : " (closed, genus 0)") << "\n";
+  std::string note;
+  const bool atlas = atlas_fits(m, note);
+  out << "  dlf atlas             " << (atlas ? "fits (" + note + ")" : "does not fit: " + note) << "\n";
 }
-
 } // namespace
 
 nlohmann::ordered_json mesh_info(const std::string& name, const std::vector<Vec3>& xyz,

@@ -49,7 +49,7 @@ void check_triangles(const std::vector<Polygon>& polygons, const std::string& na
   }
   std::ostringstream s;
   s << name << ": " << bad << " of " << polygons.size() << " faces are not triangles (first: face " << first
-    << " with " << polygons[first].size() << " vertices); triangulate the mesh first";
+    << " with " << polygons[first].size() << " vertices); triangulate the mesh first, or 'dlf atlas' triangulates it";
   throw Cli_error(s.str());
 }
 
@@ -397,7 +397,7 @@ Indexed_mesh checked_triangle_mesh(std::vector<Vec3> xyz, std::vector<std::vecto
     CGAL::Polygon_mesh_processing::orient_polygon_soup(points, polygons);
     if(points.size() != n || polygons.size() != mesh_faces || !CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
       throw Cli_error(name + ": the mesh is not manifold (an edge has more than two faces, or a vertex "
-                      "joins separate fans)");
+                      "joins separate fans); 'dlf atlas' splits its non-manifold vertices");
   }
 
   Indexed_mesh mesh;
@@ -503,17 +503,29 @@ std::vector<Border_loop> check_disk_topology(const Indexed_mesh& mesh, const std
   // a disk (b = 1, χ = 1) or a disk with holes (χ = 2 − b).
   if(components == 1 && !loops.empty() && euler == 2 - long(loops.size())) return loops;
 
+  // The reason first, then what fits instead.
   std::ostringstream s;
-  s << quoted(path) << ": not a disk (with or without holes): found " << components << " connected component"
-    << (components == 1 ? "" : "s") << ", " << loops.size() << " border loop" << (loops.size() == 1 ? "" : "s");
-  if(components == 1) {
-    const long twice_genus = 2 - long(loops.size()) - euler;
-    s << ", genus " << twice_genus / 2;
-    if(loops.empty() && twice_genus == 0) s << " (a closed sphere-like surface: cut it open first)";
+  s << quoted(path) << ": not a disk: ";
+  const long twice_genus = 2 - long(loops.size()) - euler;
+  const bool has_genus = twice_genus >= 0 && twice_genus % 2 == 0;
+  if(components != 1) {
+    s << components << " connected components (dlf disk maps one), " << loops.size() << " border loop"
+      << (loops.size() == 1 ? "" : "s") << " in all, Euler characteristic " << euler
+      << "; 'dlf atlas' maps every component";
+  } else if(loops.empty()) {
+    s << "a closed surface (no border loop) of ";
+    if(has_genus) s << "genus " << twice_genus / 2 << " (Euler characteristic " << euler << ")";
+    else s << "Euler characteristic " << euler;
+    s << "; dlf disk needs a border: "
+      << (twice_genus == 0 ? "'dlf sphere' maps it onto the sphere, 'dlf atlas' cuts it into disks"
+                           : "cut it open, or 'dlf atlas' cuts it into disks");
   } else {
-    s << ", Euler characteristic " << euler;
+    if(has_genus) s << "genus " << twice_genus / 2 << " with ";
+    else s << "Euler characteristic " << euler << " with ";
+    s << loops.size() << " border loop" << (loops.size() == 1 ? "" : "s");
+    if(has_genus) s << " (Euler characteristic " << euler << ")";
+    s << "; dlf disk takes genus 0 (the loops past the first are holes), 'dlf atlas' cuts it into disks";
   }
-  s << "; dlf disk takes 1 component of genus 0 with at least 1 border loop (the others are holes)";
   throw Cli_error(s.str());
 }
 

@@ -81,4 +81,58 @@ void Output_files::commit()
   }
 }
 
+nlohmann::ordered_json seconds_json(const Command_seconds& c, double initial, double flow, double total)
+{
+  return { { "read", c.read }, { "check", c.check }, { "initial", initial }, { "flow", flow },
+           { "write", c.write }, { "pictures", c.pictures }, { "total", total } };
+}
+
+namespace {
+
+// Lists of their own, one entry per iteration or per chart: a table each,
+// not columns of a one-row table.
+bool is_long_list(const std::string& key) { return key == "history" || key == "chart_list"; }
+
+void flatten(const nlohmann::ordered_json& j, const std::string& name,
+             std::vector<std::pair<std::string, const nlohmann::ordered_json*> >& cells)
+{
+  if(j.is_object() && !j.empty()) {
+    for(auto it = j.begin(); it != j.end(); ++it) {
+      if(name.empty() && is_long_list(it.key())) continue;
+      flatten(it.value(), name.empty() ? it.key() : name + "." + it.key(), cells);
+    }
+  } else if(j.is_array() && !j.empty()) {
+    for(std::size_t k = 0; k < j.size(); ++k) flatten(j[k], name + "." + std::to_string(k), cells);
+  } else {
+    cells.emplace_back(name, &j);
+  }
+}
+
+std::string csv_field(const std::string& text)
+{
+  if(text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for(char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+std::string csv_value(const nlohmann::ordered_json& j)
+{
+  if(j.is_null() || (j.is_structured() && j.empty())) return "";
+  if(j.is_string()) return csv_field(j.get<std::string>());
+  return j.dump();
+}
+
+} // namespace
+
+void write_csv_report(std::ostream& out, const nlohmann::ordered_json& report)
+{
+  std::vector<std::pair<std::string, const nlohmann::ordered_json*> > cells;
+  flatten(report, "", cells);
+  for(std::size_t k = 0; k < cells.size(); ++k) out << (k ? "," : "") << csv_field(cells[k].first);
+  out << "\n";
+  for(std::size_t k = 0; k < cells.size(); ++k) out << (k ? "," : "") << csv_value(*cells[k].second);
+  out << "\n";
+}
+
 } // namespace dlf_cli

@@ -8,6 +8,8 @@
 #ifndef DLF_CLI_OUTPUT_FILES_H
 #define DLF_CLI_OUTPUT_FILES_H
 
+#include <nlohmann/json.hpp>
+
 #include <functional>
 #include <ostream>
 #include <string>
@@ -49,6 +51,32 @@ private:
   std::vector<File> m_files;
   std::vector<std::string> m_committed;
 };
+
+/// The command's own time around the library's run, in seconds: reading
+/// the input, checking it, writing the maps, drawing the pictures. Zero
+/// where the command (or the Python module, which reads and writes no file)
+/// has no such step.
+struct Command_seconds
+{
+  double read = 0, check = 0, write = 0, pictures = 0;
+};
+
+/// The `seconds` object that `dlf disk`, `dlf sphere` and `dlf volume`
+/// share: read, check, initial, flow, write, pictures, total, always all
+/// seven in this order (0 for a step the command does not have). `total`
+/// is the parameterizer's whole call (its initial map, its flow and its
+/// own bookkeeping); the command's wall time is about read + check + total
+/// + write + pictures. A command appends its own split after these.
+nlohmann::ordered_json seconds_json(const Command_seconds& command, double initial, double flow, double total);
+
+/// Writes `report` as CSV: a header line and one row. Nested objects are
+/// flattened into dotted column names (`final.d_area`, `seconds.flow`),
+/// lists by index (`regions.0.achieved_fraction`), except the per-iteration
+/// `history` and the atlas's per-chart `chart_list`, which stay in the JSON
+/// report. A null is an empty cell; strings are quoted when they hold a
+/// comma, a quote or a line break (RFC 4180); numbers are written as the
+/// JSON writes them (shortest round trip).
+void write_csv_report(std::ostream& out, const nlohmann::ordered_json& report);
 
 } // namespace dlf_cli
 

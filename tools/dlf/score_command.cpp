@@ -21,18 +21,20 @@ int score_command(const std::vector<std::string>& args)
   if(!parse_score_arguments(args, s)) return EXIT_OK;
   Output_files outputs;
   if(!s.report.empty()) outputs.declare(s.report, "--report");
+  if(!s.csv.empty()) outputs.declare(s.csv, "--csv");
 
   const Indexed_mesh mesh = read_triangle_mesh(s.mesh);
   // Per-corner uv (a map with seams) is measured on the mesh cut open.
   const Obj_map map = read_map_obj(s.parameterization, mesh);
   const Metrics m = compute_metrics(map.surface, map.uv);
 
-  if(!s.report.empty()) {
+  if(!s.report.empty() || !s.csv.empty()) {
     nlohmann::ordered_json report = { { "status", "ok" }, { "mesh", s.mesh }, { "parameterization", s.parameterization },
                                        { "vertices", mesh.xyz.size() }, { "faces", mesh.faces.size() },
                                        { "uv", map.per_corner ? "per_corner" : "per_vertex" },
                                        { "uv_vertices", map.uv.size() }, { "metrics", metrics_to_json(m) } };
-    outputs.write(s.report, [&](std::ostream& o) { o << report.dump(2) << '\n'; });
+    if(!s.report.empty()) outputs.write(s.report, [&](std::ostream& o) { o << report.dump(2) << '\n'; });
+    if(!s.csv.empty()) outputs.write(s.csv, [&](std::ostream& o) { write_csv_report(o, report); });
   }
   outputs.commit();
   if(s.verbosity != Verbosity::QUIET) {

@@ -120,7 +120,45 @@ std::vector<Vertex_pair> join_cones(const Indexed_mesh& mesh, const Directed_edg
   return out;
 }
 
+// The seam edges of `pairs` (a0 b0 a1 b1 ...), each checked to be an
+// interior edge of the mesh; `where(k)` names the k-th pair in messages.
+std::vector<Vertex_pair> checked_seam_edges(const std::vector<long>& pairs, const Indexed_mesh& mesh,
+                                            const Directed_edges& edges, const std::function<std::string(std::size_t)>& where)
+{
+  const long V = long(mesh.xyz.size());
+  std::vector<std::pair<int, int> > seen;
+  for(std::size_t k = 0; k + 1 < pairs.size(); k += 2) {
+    const long a = pairs[k], b = pairs[k + 1];
+    const std::string at = where(k / 2) + " " + pair_name(a, b) + ": ";
+    for(long v : { a, b })
+      if(v < 0 || v >= V)
+        throw Cli_error(at + "vertex " + std::to_string(v) + " does not exist (the mesh has " + std::to_string(V) +
+                        " vertices)");
+    if(a == b) throw Cli_error(at + "not an edge (the same vertex twice)");
+    if(!edges.is_edge(int(a), int(b))) throw Cli_error(at + "no edge of the mesh joins these vertices");
+    if(!edges.is_interior(int(a), int(b)))
+      throw Cli_error(at + "a border edge of the mesh (a seam cuts along interior edges)");
+    seen.emplace_back(int(std::min(a, b)), int(std::max(a, b)));
+  }
+  // An edge listed twice is one seam (CGAL's Seam_mesh ignores the repeat).
+  std::sort(seen.begin(), seen.end());
+  seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
+  std::vector<Vertex_pair> out;
+  for(const auto& e : seen) out.push_back({{ e.first, e.second }});
+  return out;
+}
+
 } // namespace
+
+Seam_selection seam_selection_of_pairs(const std::vector<long>& pairs, const Indexed_mesh& mesh, const std::string& name)
+{
+  if(pairs.size() % 2 != 0) throw Cli_error(name + ": an odd number of vertex indices; seam edges are pairs");
+  Seam_selection s;
+  s.edges = checked_seam_edges(pairs, mesh, Directed_edges(mesh),
+                               [&](std::size_t k) { return name + ": edge " + std::to_string(k); });
+  if(s.edges.empty()) throw Cli_error(name + ": no seam edges: nothing to cut along");
+  return s;
+}
 
 Seam_selection read_seam_selection(const std::string& path, const Indexed_mesh& mesh)
 {
@@ -143,24 +181,9 @@ Seam_selection read_seam_selection(const std::string& path, const Indexed_mesh& 
   if(edge_line.size() % 2 != 0)
     throw Cli_error(quoted(path) + ": line 3 has " + std::to_string(edge_line.size()) +
                     " indices, an odd number: seam edges are pairs of vertex indices");
-  std::vector<std::pair<int, int> > seen;
-  for(std::size_t k = 0; k < edge_line.size(); k += 2) {
-    const long a = edge_line[k], b = edge_line[k + 1];
-    const std::string where = quoted(path) + ": line 3, pair " + std::to_string(k / 2 + 1) + " " + pair_name(a, b) + ": ";
-    for(long v : { a, b })
-      if(v >= V)
-        throw Cli_error(where + "vertex " + std::to_string(v) + " does not exist (the mesh has " + std::to_string(V) +
-                        " vertices)");
-    if(a == b) throw Cli_error(where + "not an edge (the same vertex twice)");
-    if(!edges.is_edge(int(a), int(b))) throw Cli_error(where + "no edge of the mesh joins these vertices");
-    if(!edges.is_interior(int(a), int(b)))
-      throw Cli_error(where + "a border edge of the mesh (a seam cuts along interior edges)");
-    seen.emplace_back(int(std::min(a, b)), int(std::max(a, b)));
-  }
-  // An edge listed twice is one seam (CGAL's Seam_mesh ignores the repeat).
-  std::sort(seen.begin(), seen.end());
-  seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
-  for(const auto& e : seen) s.edges.push_back({{ e.first, e.second }});
+  s.edges = checked_seam_edges(edge_line, mesh, edges, [&](std::size_t k) {
+    return quoted(path) + ": line 3, pair " + std::to_string(k + 1);
+  });
 
   std::vector<int> cones;
   for(long v : vertex_line) {
@@ -234,14 +257,20 @@ Seam_cut cut_along_seams(const Indexed_mesh& mesh, const Seam_selection& seams)
 Seam_cut read_and_cut(const Indexed_mesh& mesh, const std::string& mesh_path, const std::string& seam_path,
                       const std::function<void(const Indexed_mesh&, const std::string&)>& check)
 {
-  Seam_cut cut = cut_along_seams(mesh, read_seam_selection(seam_path, mesh));
+  return checked_cut(mesh, mesh_path, read_seam_selection(seam_path, mesh), quoted(seam_path), check);
+}
+
+Seam_cut checked_cut(const Indexed_mesh& mesh, const std::string& mesh_path, const Seam_selection& seams,
+                     const std::string& seam_name, const std::function<void(const Indexed_mesh&, const std::string&)>& check)
+{
+  Seam_cut cut = cut_along_seams(mesh, seams);
   try {
     check(cut.mesh, mesh_path);
   } catch(const Cli_error& e) {
     // "'MESH': not a disk..." becomes "'MESH' cut along ...: not a disk...".
     const std::size_t n = cut.seams.edges.size();
     const std::string cut_name = " cut along the " + std::to_string(n) + " seam edge" + (n == 1 ? "" : "s") + " of " +
-      quoted(seam_path) + (cut.seams.cones ? " (shortest paths joining the " + std::to_string(cut.seams.cones) +
+      seam_name + (cut.seams.cones ? " (shortest paths joining the " + std::to_string(cut.seams.cones) +
                                              " vertices of its line 1)" : std::string());
     std::string message = e.what();
     const std::string prefix = quoted(mesh_path);

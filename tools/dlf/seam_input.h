@@ -35,6 +35,11 @@ struct Seam_selection
 /// two vertices that no edge joins, a border edge, an odd count.
 Seam_selection read_seam_selection(const std::string& path, const Indexed_mesh& mesh);
 
+/// The seams given as vertex pairs (a0 b0 a1 b1 ...: the Python module's
+/// `seam` array), with the checks of a selection file's line 3; `name`
+/// prefixes messages.
+Seam_selection seam_selection_of_pairs(const std::vector<long>& pairs, const Indexed_mesh& mesh, const std::string& name);
+
 /// The input cut open along `edges`: vertex i < V of the cut is the side of
 /// input vertex i met first in face order, the other sides follow; faces
 /// keep the input order and orientation.
@@ -52,6 +57,10 @@ Seam_cut cut_along_seams(const Indexed_mesh& mesh, const Seam_selection& seams);
 /// components, border loops, genus) is rethrown naming the cut.
 Seam_cut read_and_cut(const Indexed_mesh& mesh, const std::string& mesh_path, const std::string& seam_path,
                       const std::function<void(const Indexed_mesh&, const std::string&)>& check);
+
+/// `read_and_cut()` with seams already read; `seam_name` names them in messages.
+Seam_cut checked_cut(const Indexed_mesh& mesh, const std::string& mesh_path, const Seam_selection& seams,
+                     const std::string& seam_name, const std::function<void(const Indexed_mesh&, const std::string&)>& check);
 
 } // namespace dlf_cli
 

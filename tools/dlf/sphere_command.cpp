@@ -73,7 +73,9 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
   visible.add_options()
     ("help,h", "this help")
     ("output,o", po::value<std::string>(&s.output), "OBJ with the sphere points")
-    ("report", po::value<std::string>(&s.report), "JSON report")
+    ("report", po::value<std::string>(&s.report)->value_name("R.json"), "JSON report")
+    ("csv", po::value<std::string>(&s.csv)->value_name("R.csv"),
+     "the report as CSV: a header and one row, the JSON report's keys flattened (final.d_area, seconds.flow)")
     ("svg", po::value<std::string>(&s.svg)->value_name("VIEW.svg"),
      "draw the sphere from +z and from -z (orthographic), triangles coloured by area ratio")
     ("plot-convergence", po::value<std::string>(&s.convergence_svg)->value_name("PLOT.svg"),
@@ -277,7 +279,7 @@ Sphere_outcome compute_sphere(const Indexed_mesh& input, Sphere_settings& s, con
   return o;
 }
 
-json sphere_report(const Sphere_settings& s, const Indexed_mesh& input, const Sphere_outcome& o)
+json sphere_report(const Sphere_settings& s, const Indexed_mesh& input, const Sphere_outcome& o, const Command_seconds& io)
 {
   const SMP::Discrete_lie_flow_report& R = o.report;
   const Density_setup& density = o.density;
@@ -290,7 +292,7 @@ json sphere_report(const Sphere_settings& s, const Indexed_mesh& input, const Sp
   j["faces"] = input.faces.size();
   j["iterations"] = R.iterations;
   j["stop_reason"] = SMP::discrete_lie_flow_stop_reason_name(R.stop_reason);
-  j["seconds"] = { { "initial", R.seconds_initial }, { "flow", R.seconds_flow }, { "total", o.seconds } };
+  j["seconds"] = seconds_json(io, R.seconds_initial, R.seconds_flow, o.seconds);
   j["options"] = { { "tolerance", s.options.tolerance }, { "log_area_tolerance", s.options.sphere.log_area_tolerance },
                    { "share_tolerance", s.options.certified.share_tolerance },
                    { "max_iterations", s.options.max_iterations },
@@ -350,7 +352,11 @@ json sphere_report(const Sphere_settings& s, const Indexed_mesh& input, const Sp
 
 Cli_error sphere_failure(const Sphere_settings& s, const Sphere_outcome& o)
 {
-  return Cli_error(s.input + ": " + SMP::discrete_lie_flow_error_name(o.status) + ": " + o.report.message,
+  // A mesh of another topology still has a map: say which command makes it.
+  const std::string other = int(o.status) == SMP::ERROR_NOT_GENUS_0
+                              ? "; 'dlf atlas' maps any mesh (several components, borders, any genus) into the plane"
+                              : "";
+  return Cli_error(s.input + ": " + SMP::discrete_lie_flow_error_name(o.status) + ": " + o.report.message + other,
                    o.input_error() ? EXIT_BAD_INPUT : EXIT_FLOW_ERROR);
 }
 
@@ -361,16 +367,24 @@ int sphere_command(const std::vector<std::string>& args)
   Output_files outputs;
   if(!s.output.empty()) outputs.declare(s.output, "-o");
   if(!s.report.empty()) outputs.declare(s.report, "--report");
+  if(!s.csv.empty()) outputs.declare(s.csv, "--csv");
   if(!s.domain_mesh.empty()) outputs.declare(s.domain_mesh, "--domain-mesh");
   if(!s.svg.empty()) outputs.declare(s.svg, "--svg");
   if(!s.convergence_svg.empty()) outputs.declare(s.convergence_svg, "--plot-convergence");
   if(!s.histogram_svg.empty()) outputs.declare(s.histogram_svg, "--plot-histogram");
 
+  Command_seconds io;
+  const auto since = [](std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  };
+  auto t0 = std::chrono::steady_clock::now();
   const Indexed_mesh input = read_triangle_mesh(s.input);
   if(!s.init_map_file.empty()) s.init_map = read_start_map(s.init_map_file, input);
+  io.read = since(t0);
   Progress progress(s.verbosity, s.mode != "certified");
   s.options.callback = progress.callback();
   Sphere_outcome outcome;
+  t0 = std::chrono::steady_clock::now();
   try {
     outcome = compute_sphere(input, s);
   } catch(...) {
@@ -378,6 +392,7 @@ int sphere_command(const std::vector<std::string>& args)
     throw;
   }
   progress.finish();
+  io.check = (std::max)(0., since(t0) - outcome.seconds);
   const SMP::Discrete_lie_flow_report& R = outcome.report;
   const bool ok = outcome.ok();
   const double total = outcome.seconds;
@@ -391,6 +406,7 @@ int sphere_command(const std::vector<std::string>& args)
   auto write_points = [&](std::ostream& o) {
     for(const Vec3& p : points) o << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
   };
+  t0 = std::chrono::steady_clock::now();
   if(ok && !s.output.empty())
     outputs.write(s.output, [&](std::ostream& o) {
       o << "# dlf sphere " << s.input << ": d_area " << std::setprecision(10) << R.final_metrics.d_area << "\n"
@@ -408,6 +424,8 @@ int sphere_command(const std::vector<std::string>& args)
       else
         for(const Triangle& t : input.faces) o << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
     });
+  io.write = since(t0);
+  t0 = std::chrono::steady_clock::now();
   std::ostringstream caption;
   caption << "dlf sphere " << s.input << ": d_area " << std::setprecision(10) << R.final_metrics.d_area;
   if(ok && !s.svg.empty())
@@ -422,9 +440,11 @@ int sphere_command(const std::vector<std::string>& args)
     outputs.write(s.convergence_svg, [&](std::ostream& o) {
       write_convergence_plot(o, R.history, R.initial_d_area, s.options.tolerance, caption.str());
     });
-  if(!s.report.empty() && !input_error) {
-    const json j = sphere_report(s, input, outcome);
-    outputs.write(s.report, [&](std::ostream& o) { o << j.dump(2) << '\n'; });
+  io.pictures = since(t0);
+  if((!s.report.empty() || !s.csv.empty()) && !input_error) {
+    const json j = sphere_report(s, input, outcome, io);
+    if(!s.report.empty()) outputs.write(s.report, [&](std::ostream& o) { o << j.dump(2) << '\n'; });
+    if(!s.csv.empty()) outputs.write(s.csv, [&](std::ostream& o) { write_csv_report(o, j); });
   }
   outputs.commit();
 

@@ -12,6 +12,7 @@
 #include "cli_error.h"
 #include "density_input.h"
 #include "mesh_input.h"
+#include "output_files.h"
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
@@ -27,6 +28,7 @@ namespace dlf_cli {
 struct Sphere_settings
 {
   std::string input, output, report, svg, convergence_svg, histogram_svg, domain_mesh;
+  std::string csv; ///< `--csv`: the report as one CSV row
   std::string mode = "certified";
   std::string start = "tutte";  ///< tutte | conformal | given (`--init-map`)
   std::string init_map_file;    ///< `--init-map`: the caller's start
@@ -61,7 +63,7 @@ Sphere_outcome compute_sphere(const Indexed_mesh& input, Sphere_settings& settin
 
 /// The JSON report of doc/design.md ("dlf sphere --report").
 nlohmann::ordered_json sphere_report(const Sphere_settings& settings, const Indexed_mesh& input,
-                                     const Sphere_outcome& outcome);
+                                     const Sphere_outcome& outcome, const Command_seconds& io = Command_seconds());
 
 /// The error of a failed run: its message and exit code.
 Cli_error sphere_failure(const Sphere_settings& settings, const Sphere_outcome& outcome);

@@ -21,6 +21,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -116,13 +117,15 @@ const char* stop_name(SMP::Discrete_lie_flow_stop_reason r)
 
 int volume_command(const std::vector<std::string>& args)
 {
-  std::string output, report_path, svg_path, density_file, border_start = "tutte", mode = "certified";
+  std::string output, report_path, csv_path, svg_path, density_file, border_start = "tutte", mode = "certified";
   SMP::Discrete_lie_flow_volume_options options;
   po::options_description visible("Options");
   visible.add_options()
     ("help,h", "this help")
     ("output,o", po::value<std::string>(&output)->value_name("OUT.mesh"), "Medit .mesh with the ball's points")
     ("report", po::value<std::string>(&report_path)->value_name("R.json"), "JSON report")
+    ("csv", po::value<std::string>(&csv_path)->value_name("R.csv"),
+     "the report as CSV: a header and one row, the JSON report's keys flattened (final.d_vol, seconds.flow)")
     ("svg", po::value<std::string>(&svg_path)->value_name("VIEW.svg"),
      "the ball's border from +z and -z, each triangle coloured by the log volume ratio of its tetrahedron")
     ("mode", po::value<std::string>(&mode)->value_name("certified|paper"),
@@ -202,8 +205,14 @@ int volume_command(const std::vector<std::string>& args)
   Output_files files;
   if(!output.empty()) files.declare(output, "-o");
   if(!report_path.empty()) files.declare(report_path, "--report");
+  if(!csv_path.empty()) files.declare(csv_path, "--csv");
   if(!svg_path.empty()) files.declare(svg_path, "--svg");
 
+  Command_seconds io;
+  const auto since = [](std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  };
+  auto t0 = std::chrono::steady_clock::now();
   D::Medit_tet_mesh mesh;
   {
     std::ifstream in(input);
@@ -230,6 +239,7 @@ int volume_command(const std::vector<std::string>& args)
       throw Cli_error(density_file + ": " + std::to_string(options.tet_density.size()) + " densities for " +
                       std::to_string(mesh.tets.size()) + " tetrahedra");
   }
+  io.read = since(t0);
   std::vector<char> in_roi;
   if(has_roi) {
     options.tet_density.assign(mesh.tets.size(), 1.);
@@ -272,6 +282,7 @@ int volume_command(const std::vector<std::string>& args)
                            code == int(SMP::ERROR_INVALID_DENSITY);
     throw Cli_error(input + ": " + R.message, bad_input ? EXIT_BAD_INPUT : EXIT_FLOW_ERROR);
   }
+  t0 = std::chrono::steady_clock::now();
   std::vector<D::Vec3> x(ball.size());
   for(std::size_t i = 0; i < ball.size(); ++i) x[i] = {{ ball[i].a, ball[i].b, ball[i].c }};
   D::Ball_topology topo;
@@ -292,14 +303,19 @@ int volume_command(const std::vector<std::string>& args)
     roi_target /= T;
     roi_achieved /= U;
   }
+  io.check = since(t0);
+  t0 = std::chrono::steady_clock::now();
   if(!output.empty())
     files.write(output, [&](std::ostream& os) { D::write_medit(os, x, mesh.tets, mesh.tet_refs, topo.border_faces); });
+  io.write = since(t0);
+  t0 = std::chrono::steady_clock::now();
   if(!svg_path.empty()) {
     std::ostringstream caption;
     caption << input << ": D_vol " << R.final_d_vol << ", " << R.tets << " tetrahedra";
     files.write(svg_path, [&](std::ostream& os) { write_svg_ball(os, x, topo, R.volume_ratio, caption.str()); });
   }
-  if(!report_path.empty()) {
+  io.pictures = since(t0);
+  if(!report_path.empty() || !csv_path.empty()) {
     json j;
     j["input"] = input;
     // As `dlf disk` and `dlf sphere`: a valid map short of its goal is "not_converged" (exit 3).
@@ -335,8 +351,12 @@ int volume_command(const std::vector<std::string>& args)
                        { "threads", options.threads },
                        { "threads_used", D::volume_flow_threads(options.threads, mesh.tets.size()) } };
     j["counters"] = { { "rejected_by_exact_check", R.rejected_by_exact_check }, { "cg_iterations", R.cg_iterations } };
-    j["seconds"] = { { "border", R.seconds_border }, { "interior", R.seconds_interior }, { "untangle", R.seconds_untangle },
-                     { "flow", R.seconds_flow }, { "total", R.seconds_total } };
+    // The start is the border's spherical map, the interior's Tutte map and its untangling.
+    j["seconds"] = seconds_json(io, R.seconds_border + R.seconds_interior + R.seconds_untangle, R.seconds_flow,
+                                R.seconds_total);
+    j["seconds"]["border"] = R.seconds_border;
+    j["seconds"]["interior"] = R.seconds_interior;
+    j["seconds"]["untangle"] = R.seconds_untangle;
     if(options.record_history) {
       json h = json::array();
       for(const auto& I : R.history)
@@ -344,7 +364,8 @@ int volume_command(const std::vector<std::string>& args)
                       { "d_vol", I.d_vol }, { "cg_iterations", I.cg_iterations }, { "seconds", I.seconds } });
       j["history"] = h;
     }
-    files.write(report_path, [&](std::ostream& os) { os << j.dump(2) << '\n'; });
+    if(!report_path.empty()) files.write(report_path, [&](std::ostream& os) { os << j.dump(2) << '\n'; });
+    if(!csv_path.empty()) files.write(csv_path, [&](std::ostream& os) { write_csv_report(os, j); });
   }
   files.commit();
   if(!quiet) {

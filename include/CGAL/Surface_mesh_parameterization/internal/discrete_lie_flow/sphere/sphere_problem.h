@@ -93,14 +93,23 @@ inline Validation validate_sphere_topology(std::size_t n, const std::vector<Face
   }
   const long chi = long(n - isolated) - long(undirected) + long(faces.size());
   if(border != 0 || non_manifold != 0 || components != 1 || isolated != 0 || chi != 2) {
+    // The reason first: what the mesh has that a sphere has not; the Euler
+    // characteristic is the reason only for one closed manifold component.
+    std::vector<std::string> reasons;
+    if(components != 1) reasons.push_back(std::to_string(components) + (components == 1 ? " component" : " components"));
+    if(border) reasons.push_back(std::to_string(border) + (border == 1 ? " border edge" : " border edges"));
+    if(non_manifold) reasons.push_back(std::to_string(non_manifold) + " non-manifold or inconsistently oriented edges");
+    if(isolated) reasons.push_back(std::to_string(isolated) + " isolated vertices");
     std::ostringstream s;
-    s << "a spherical map needs a closed, connected genus-0 surface; found " << components << " component"
-      << (components == 1 ? "" : "s") << ", " << border << " border edge" << (border == 1 ? "" : "s");
-    if(non_manifold) s << ", " << non_manifold << " non-manifold or inconsistently oriented edges";
-    if(isolated) s << ", " << isolated << " isolated vertices";
-    s << ", Euler characteristic " << chi << " (a sphere has 2";
-    if(components == 1 && border == 0 && non_manifold == 0 && chi < 2 && chi % 2 == 0) s << "; this one has genus " << (2 - chi) / 2;
-    s << ")";
+    s << "not a closed genus-0 surface: ";
+    if(reasons.empty()) {
+      if(chi < 2 && chi % 2 == 0) s << "a closed surface of genus " << (2 - chi) / 2 << " (Euler characteristic " << chi << ")";
+      else s << "Euler characteristic " << chi;
+      s << "; a sphere has genus 0, Euler characteristic 2";
+    } else {
+      for(std::size_t k = 0; k < reasons.size(); ++k) s << (k == 0 ? "" : k + 1 == reasons.size() ? " and " : ", ") << reasons[k];
+      s << "; a spherical map needs one closed, manifold component (this mesh: Euler characteristic " << chi << ")";
+    }
     r.code = ERROR_NOT_GENUS_0;
     r.message = s.str();
   }
