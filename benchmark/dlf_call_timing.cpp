@@ -34,7 +34,7 @@ int main(int argc, char** argv)
     dlf_cli::Disk_settings s;
     dlf_cli::parse_disk_arguments({ "mesh", "--quiet" }, s);
     const dlf_cli::Disk_outcome o = dlf_cli::compute_disk(input, s);
-    const std::string report = dlf_cli::disk_report(s, input, o, 0).dump();
+    const std::string report = dlf_cli::disk_report(s, input, o).dump();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if(!o.ok) return 2;
     std::printf("%.6f %.6f %zu\n", seconds, o.run.seconds, report.size());

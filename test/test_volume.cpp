@@ -519,6 +519,7 @@ TEST(Volume, UntanglingOfAGradedMeshConvergesQuickly)
 /// The certified start of a grid (no untangling needed) with the interior
 /// vertex at grid point `c` (and, with two, at `d`) moved past one of its
 /// neighbours: a local fold.
+namespace {
 struct Folded_grid
 {
   Tet_mesh m;
@@ -526,6 +527,7 @@ struct Folded_grid
   std::vector<D::Vec3> xyz, y;
   std::vector<double> target;
 };
+} // namespace
 
 /// The vertex at grid point (i, j, k) of full_grid(n) (unwarped).
 std::size_t grid_vertex(const Tet_mesh& m, int i, int j, int k)
