@@ -261,6 +261,7 @@ int atlas_command(const std::vector<std::string>& args)
     j["max_genus"] = r.max_genus;
     j["charts"] = r.charts;
     j["splits"] = r.splits;
+    j["peeled_faces"] = r.peeled_faces;
     j["unconverged_charts"] = r.unconverged_charts;
     j["converged"] = r.converged();
     j["valid"] = r.valid();
