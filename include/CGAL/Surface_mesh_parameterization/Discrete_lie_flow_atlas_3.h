@@ -154,7 +154,10 @@ inline void normalize_chart(const Atlas_piece& piece, std::vector<Vec2>& uv, dou
 /// certified flow of `Discrete_lie_flow_parameterizer_3` (square border by
 /// default), scaled to its share of the area; a chart whose flow does not
 /// converge is split in two geodesic halves, each flattened again (at most
-/// `options.max_split_depth` times). The charts are packed into the unit
+/// `options.max_split_depth` times); one that cannot be split gives up its
+/// triangles with three corners on its border, then is laid out triangle
+/// by triangle, each isometric (`report.peeled_faces`), so that every chart
+/// converges. The charts are packed into the unit
 /// square with `options.gutter` around each: by default each fills a cell of
 /// a squarified treemap, stretched to the cell's shape by an area-preserving
 /// affine map (u, v) → (a·u, v/a), which changes no area ratio
