@@ -255,7 +255,7 @@ int atlas_command(const std::vector<std::string>& args)
   if(!a.svg.empty()) {
     // The unit square at 800 px, v up; each triangle's colour: log of its uv
     // area over its share of the surface (white: exact).
-    const double side = 800, margin = 30, bar = 60;
+    const double side = 800, margin = 30, bar = 110; // bar: the colour bar and its labels
     double uv_total = 0, area_total = 0;
     std::vector<std::array<Atlas_kernel::Point_2, 3> > tri;
     std::vector<double> area3;
@@ -269,9 +269,11 @@ int atlas_command(const std::vector<std::string>& args)
       uv_total += CGAL::area(t[0], t[1], t[2]);
       area_total += area3.back();
     }
+    char d_area_text[32];
+    std::snprintf(d_area_text, sizeof d_area_text, "%.4f", r.metrics.d_area);
     std::ostringstream svg;
     write_svg_header(svg, side + 2 * margin + bar, side + 2 * margin,
-                     "dlf atlas " + a.input + ": " + std::to_string(r.charts) + " charts, D_area " + shortest(r.metrics.d_area) +
+                     "dlf atlas " + a.input + ": " + std::to_string(r.charts) + " charts, D_area " + d_area_text +
                      ", uv area over share");
     svg << "<rect x=\"" << margin << "\" y=\"" << margin << "\" width=\"" << side << "\" height=\"" << side
         << "\" fill=\"none\" stroke=\"#888\"/>\n";
