@@ -1015,7 +1015,7 @@ check "no temporaries left (volume)" no_temporaries
 # --- atlas ----------------------------------------------------------------------
 # A closed genus-1 mesh: a valid atlas (exact checks), per-corner vt, the
 # file's v lines in order.
-"$DLF" atlas "$MESHES/knot1.off" -o knot_atlas.obj --report knot_atlas.json --quiet > atlas.out 2> atlas.err
+"$DLF" atlas "$MESHES/knot1.off" -o knot_atlas.obj --report knot_atlas.json --svg knot_atlas.svg --quiet > atlas.out 2> atlas.err
 check "atlas knot1 exits 0" equals "$?" 0
 check "atlas knot1: no stderr with --quiet" equals "$(wc -c < atlas.err)" 0
 check "atlas knot1 report: valid" equals "$(json_get knot_atlas.json "" valid)" true
@@ -1029,6 +1029,18 @@ check "atlas knot1 OBJ: the file's v lines, in order" equals \
   "$(awk '!/^#/ && NF' "$MESHES/knot1.off" | awk 'NR == 2 { n = $1 } NR > 2 && NR <= 2 + n { printf "%.12g %.12g %.12g\n", $1, $2, $3 }' | md5sum)"
 check "atlas knot1 OBJ: 6400 faces f v/vt" equals "$(grep -c '^f [0-9]*/[0-9]* [0-9]*/[0-9]* [0-9]*/[0-9]*$' knot_atlas.obj)" 6400
 check "atlas knot1 OBJ: vt in the unit square" awk '/^vt / { if($2 < 0 || $2 > 1 || $3 < 0 || $3 > 1) bad = 1 } END { exit bad }' knot_atlas.obj
+check "atlas knot1 --svg: one polygon per face" equals "$(grep -c '^<polygon ' knot_atlas.svg)" 6400
+check "atlas knot1 --svg: a whole SVG" equals "$(tail -1 knot_atlas.svg)" "</svg>"
+# dlf score on the atlas (its own v lines are the mesh): the same D_area,
+# as many charts, no fold and no overlapping uv triangles (exact).
+"$DLF" score knot_atlas.obj knot_atlas.obj --report knot_score.json > knot_score.out 2>&1
+check "score of an atlas exits 0" equals "$?" 0
+check "score of an atlas: D_area equals the atlas report's (1e-9 relative)" \
+  relatively_equal "$(json_get knot_score.json atlas d_area)" "$(json_get knot_atlas.json "" d_area)" 1e-9
+check "score of an atlas: its charts" equals "$(json_get knot_score.json atlas charts)" "$(json_get knot_atlas.json "" charts)"
+check "score of an atlas: 0 inverted, 0 overlapping uv triangle pairs" equals \
+  "$(json_get knot_score.json atlas inverted_faces) $(json_get knot_score.json atlas overlapping_face_pairs)" "0 0"
+check "score of an atlas: says so" grep -q "overlapping uv triangle pairs" knot_score.out
 # Polygons: triangulated, said on stderr and in the report.
 "$DLF" atlas "$MESHES/double-torus-example.off" -o dt.obj --report dt.json > dt.out 2> dt.err
 check "atlas on polygons exits 0" equals "$?" 0

@@ -17,6 +17,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_atlas_3.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/atlas/atlas_score.h>
 
 #include <algorithm>
 #include <array>
@@ -189,6 +190,10 @@ TEST_P(AtlasClosed, ValidCertifiedAreaPreservingAtlas)
   EXPECT_EQ(r.max_genus, k.genus);
   EXPECT_GT(r.seam_length, 0.);
   EXPECT_EQ(r.three_border_corner_faces, 0u);
+  // Charts below the coarse-to-fine size flow toward the small-chart
+  // tolerance (0.001; a chart may plateau just above it: eight, 2.0015),
+  // far under the 2.005–2.009 these meshes get at the flow's 0.01.
+  EXPECT_LE(r.metrics.d_area, 2 + 2 * SMP::Discrete_lie_flow_atlas_options().small_chart_tolerance);
 }
 
 INSTANTIATE_TEST_SUITE_P(CgalData, AtlasClosed,
@@ -341,6 +346,107 @@ TEST(Atlas, CutsLeaveOneDiskWithoutThreeBorderCornerTriangles)
     EXPECT_EQ(D::three_border_corner_faces(opened, t2), 0u) << name;
     EXPECT_GT(length, 0.) << name;
   }
+}
+
+TEST(Atlas, TrianglesFixedByTheBorderBecomeChartsOfTheirOwn)
+{
+  // A grid with tall ears on one side (a jagged border): an ear has its
+  // three corners on the border, which fixes its area, so the chart cannot
+  // converge; the ears are peeled off (a chart each) and the grid converges.
+  Mesh m;
+  const int n = 8;
+  std::vector<Mesh::Vertex_index> v;
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) v.push_back(m.add_vertex(K::Point_3(i, j, 0.3 * std::sin(0.9 * i + 0.5 * j))));
+  for(int j = 0; j + 1 < n; ++j)
+    for(int i = 0; i + 1 < n; ++i) {
+      m.add_face(v[j * n + i], v[j * n + i + 1], v[(j + 1) * n + i + 1]);
+      m.add_face(v[j * n + i], v[(j + 1) * n + i + 1], v[(j + 1) * n + i]);
+    }
+  for(int i = 0; i + 1 < n; ++i) {
+    const Mesh::Vertex_index e = m.add_vertex(K::Point_3(i + 0.5, -1.5 - (i % 3), 0));
+    m.add_face(v[i], e, v[i + 1]);
+  }
+  ASSERT_EQ(num_faces(m), 105u);
+  SMP::Discrete_lie_flow_atlas_options o;
+  o.max_split_depth = 0; // the peel alone
+  UV_map uv = uv_map(m);
+  const SMP::Discrete_lie_flow_atlas_report r = SMP::discrete_lie_flow_atlas(m, uv, o);
+  const Atlas_check c = check_atlas(m, uv);
+  ASSERT_EQ(r.code, SMP::OK) << r.message;
+  EXPECT_TRUE(r.converged());
+  EXPECT_TRUE(r.valid());
+  EXPECT_EQ(c.outside + c.inverted + c.degenerate + c.overlapping_boxes, 0u);
+  EXPECT_EQ(r.peeled_faces, 9u); // the 7 ears and the grid's 2 corner triangles
+  EXPECT_EQ(r.charts, 10u);
+  EXPECT_EQ(c.charts, r.charts);
+  EXPECT_LE(r.metrics.d_area, 2.02);
+}
+
+TEST(Atlas, ChartsThatCannotConvergeNorSplitBecomeTriangles)
+{
+  // A grid whose cells grow a thousandfold across it, its flow capped at
+  // one iteration, no split and no peel allowed: the chart stops far from
+  // its tolerance, so each triangle becomes a chart, laid out isometrically.
+  Mesh m;
+  const int n = 8;
+  std::vector<Mesh::Vertex_index> v;
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) v.push_back(m.add_vertex(K::Point_3(0.01 * i * i * i * i, 0.05 * j * j * j, 0)));
+  for(int j = 0; j + 1 < n; ++j)
+    for(int i = 0; i + 1 < n; ++i) {
+      m.add_face(v[j * n + i], v[j * n + i + 1], v[(j + 1) * n + i + 1]);
+      m.add_face(v[j * n + i], v[(j + 1) * n + i + 1], v[(j + 1) * n + i]);
+    }
+  ASSERT_EQ(num_faces(m), 98u);
+  SMP::Discrete_lie_flow_atlas_options o;
+  o.flow.max_iterations = 1;
+  o.max_split_depth = 0;
+  o.max_border_peels = 0;
+  UV_map uv = uv_map(m);
+  const SMP::Discrete_lie_flow_atlas_report r = SMP::discrete_lie_flow_atlas(m, uv, o);
+  const Atlas_check c = check_atlas(m, uv);
+  ASSERT_EQ(r.code, SMP::OK) << r.message;
+  EXPECT_TRUE(r.converged());
+  EXPECT_TRUE(r.valid());
+  EXPECT_EQ(c.outside + c.inverted + c.degenerate + c.overlapping_boxes, 0u);
+  EXPECT_EQ(r.peeled_faces, 98u);
+  EXPECT_EQ(r.charts, 98u);
+  EXPECT_EQ(c.charts, r.charts);
+  EXPECT_NEAR(r.metrics.d_area, 2., 1e-9); // each triangle isometric
+}
+
+TEST(AtlasScore, ChartsSeamsFoldsAndOverlapsOfAnyAtlas)
+{
+  // The scorer of other tools' atlases: a square of two triangles (chart A),
+  // a third triangle on its own uv (chart B) laid over A, a fourth mirrored
+  // as a whole (chart C, not a fold) and A's second triangle folded back.
+  namespace D = CGAL::Surface_mesh_parameterization::internal::dlf;
+  const std::vector<D::Vec3> xyz = { {{ 0, 0, 0 }}, {{ 1, 0, 0 }}, {{ 1, 1, 0 }}, {{ 0, 1, 0 }}, {{ 2, 0, 0 }}, {{ 0, 2, 0 }} };
+  const std::vector<D::Face> faces = { {{ 0, 1, 2 }}, {{ 0, 2, 3 }}, {{ 1, 4, 2 }}, {{ 3, 2, 5 }} };
+  std::vector<D::Vec2> uv = { {{ 0, 0 }}, {{ 1, 0 }}, {{ 1, 1 }}, {{ 0, 1 }},       // A
+                              {{ 0.5, 0.2 }}, {{ 1.5, 0.2 }}, {{ 1.5, 1.2 }},       // B: over A's first triangle
+                              {{ 5, 5 }}, {{ 6, 5 }}, {{ 5, 4 }} };                // C: clockwise
+  std::vector<D::Face> uv_faces = { {{ 0, 1, 2 }}, {{ 0, 2, 3 }}, {{ 4, 5, 6 }}, {{ 7, 8, 9 }} };
+  D::Atlas_score S = D::score_atlas(xyz, faces, uv, uv_faces);
+  EXPECT_EQ(S.charts, 3u);
+  EXPECT_EQ(S.mirrored_charts, 1u);
+  EXPECT_EQ(S.inverted_faces, 0u);
+  EXPECT_EQ(S.overlapping_face_pairs, 1u); // B over A's first triangle; A's two triangles only touch
+  EXPECT_EQ(S.overlapping_pairs_in_a_chart, 0u);
+  EXPECT_NEAR(S.seam_length, 2., 1e-12); // edges 1-2 and 2-3 (no border edge counted)
+  // Fold A's second triangle over its first: one inverted face, one overlap inside the chart.
+  uv[3] = {{ 0.9, 0.1 }};
+  S = D::score_atlas(xyz, faces, uv, uv_faces);
+  EXPECT_EQ(S.inverted_faces, 1u);
+  EXPECT_EQ(S.overlapping_pairs_in_a_chart, 1u);
+  EXPECT_EQ(S.overlapping_face_pairs, 3u); // and B over both of A's
+  // Triangles touching at a vertex or along an edge do not overlap.
+  uv[3] = {{ 0, 1 }};
+  uv[4] = {{ 1, 1 }}; uv[5] = {{ 2, 1 }}; uv[6] = {{ 2, 2 }};
+  S = D::score_atlas(xyz, faces, uv, uv_faces);
+  EXPECT_EQ(S.overlapping_face_pairs, 0u);
+  EXPECT_NEAR(S.packing_efficiency, S.uv_area / (6. * 5.), 1e-12);
 }
 
 } // namespace

@@ -405,7 +405,10 @@ bool parse_score_arguments(const std::vector<std::string>& args, Score_settings&
                  "'vt', the x and y of its 'v' lines when all z are 0. When its faces 'f a/p b/q c/r'\n"
                  "name other 'vt' than their 'v' (per-corner uv: a map with seams, as 'dlf disk --seam'\n"
                  "writes it), its faces must be MESH's, and the metrics are those of MESH cut open, one\n"
-                 "vertex per 'vt'. Without MESH, the mesh is PARAM.obj's own 'v' and 'f'.\n\n"
+                 "vertex per 'vt'. Without MESH, the mesh is PARAM.obj's own 'v' and 'f'.\n"
+                 "A per-corner map is also scored as an atlas, whoever made it: charts, seam length,\n"
+                 "packing efficiency, D_area, folded and degenerate uv triangles, overlapping uv\n"
+                 "triangle pairs (exact; 'atlas' in the report).\n\n"
               << o;
     return false;
   }

@@ -8,11 +8,13 @@
 // file's vertices), degenerate faces dropped (they cannot have a positive
 // uv area), isolated vertices kept and counted; one stderr line and one
 // report field each. The OBJ keeps the file's `v` lines in order; `vt` one
-// per chart vertex, faces `f v/vt`.
+// per chart vertex, faces `f v/vt`. `--svg`: the packed atlas, each
+// triangle coloured by its uv area against its share of the surface.
 
 #include "cli_error.h"
 #include "commands.h"
 #include "output_files.h"
+#include "svg_common.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
@@ -25,6 +27,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -53,6 +56,7 @@ const char* atlas_help =
   "  -o, --output OUT.obj   the atlas: the file's v lines in order, vt per chart vertex, f v/vt\n"
   "  --report R.json        the report (charts, seam length, packing, D_area, repairs, checks)\n"
   "  --csv R.csv            the report as CSV: a header and one row, its keys flattened\n"
+  "  --svg A.svg            the packed atlas, each triangle coloured by its uv area over its share\n"
   "  --border square|circle the charts' border (default square: fills its cell)\n"
   "  --tips K               tips a closed component's seam runs through (default 2)\n"
   "  --gutter G             space around each chart, uv units (default 1/1024)\n"
@@ -64,7 +68,7 @@ const char* atlas_help =
 
 struct Atlas_args
 {
-  std::string input, output, report, csv;
+  std::string input, output, report, csv, svg;
   SMP::Discrete_lie_flow_atlas_options options;
   bool quiet = false;
 };
@@ -90,6 +94,7 @@ Atlas_args parse(const std::vector<std::string>& args)
     else if(s == "-o" || s == "--output") a.output = value(i);
     else if(s == "--report") a.report = value(i);
     else if(s == "--csv") a.csv = value(i);
+    else if(s == "--svg") a.svg = value(i);
     else if(s == "--border") {
       const std::string& b = value(i);
       if(b != "square" && b != "circle") throw Cli_error("atlas: --border is square or circle, not '" + b + "'");
@@ -250,6 +255,43 @@ int atlas_command(const std::vector<std::string>& args)
     std::ofstream out(a.output);
     if(!(out << obj.str())) throw Cli_error("atlas: cannot write " + a.output);
   }
+  if(!a.svg.empty()) {
+    // The unit square at 800 px, v up; each triangle's colour: log of its uv
+    // area over its share of the surface (white: exact).
+    const double side = 800, margin = 30, bar = 110; // bar: the colour bar and its labels
+    double uv_total = 0, area_total = 0;
+    std::vector<std::array<Atlas_kernel::Point_2, 3> > tri;
+    std::vector<double> area3;
+    for(auto f : faces(mesh)) {
+      std::array<Atlas_kernel::Point_2, 3> t;
+      std::array<Atlas_kernel::Point_3, 3> p;
+      std::size_t k = 0;
+      for(auto h : halfedges_around_face(halfedge(f, mesh), mesh)) { t[k] = uv[h]; p[k] = mesh.point(target(h, mesh)); ++k; }
+      tri.push_back(t);
+      area3.push_back(std::sqrt(CGAL::squared_area(p[0], p[1], p[2])));
+      uv_total += CGAL::area(t[0], t[1], t[2]);
+      area_total += area3.back();
+    }
+    char d_area_text[32];
+    std::snprintf(d_area_text, sizeof d_area_text, "%.4f", r.metrics.d_area);
+    std::ostringstream svg;
+    write_svg_header(svg, side + 2 * margin + bar, side + 2 * margin,
+                     "dlf atlas " + a.input + ": " + std::to_string(r.charts) + " charts, D_area " + d_area_text +
+                     ", uv area over share");
+    svg << "<rect x=\"" << margin << "\" y=\"" << margin << "\" width=\"" << side << "\" height=\"" << side
+        << "\" fill=\"none\" stroke=\"#888\"/>\n";
+    for(std::size_t f = 0; f < tri.size(); ++f) {
+      const double ratio = (CGAL::area(tri[f][0], tri[f][1], tri[f][2]) / uv_total) / (area3[f] / area_total);
+      svg << "<polygon points=\"";
+      for(int k = 0; k < 3; ++k)
+        svg << (k ? " " : "") << margin + side * tri[f][std::size_t(k)].x() << ',' << margin + side * (1 - tri[f][std::size_t(k)].y());
+      svg << "\" fill=\"" << colour_of_log_ratio(std::log(ratio)) << "\"/>\n";
+    }
+    write_colour_bar(svg, side + 2 * margin, margin, side, false, false);
+    svg << "</svg>\n";
+    std::ofstream out(a.svg);
+    if(!(out << svg.str())) throw Cli_error("atlas: cannot write " + a.svg);
+  }
   if(!a.report.empty() || !a.csv.empty()) {
     nlohmann::json j;
     j["input"] = a.input;
@@ -264,6 +306,7 @@ int atlas_command(const std::vector<std::string>& args)
     j["max_genus"] = r.max_genus;
     j["charts"] = r.charts;
     j["splits"] = r.splits;
+    j["peeled_faces"] = r.peeled_faces;
     j["unconverged_charts"] = r.unconverged_charts;
     j["converged"] = r.converged();
     j["valid"] = r.valid();

@@ -2,6 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // `dlf score`: the metrics of an existing map, e.g. to compare with other tools.
+// A map with per-corner uv (an atlas: `f v/vt`) is also scored as an atlas:
+// charts, seam, packing efficiency, folds and overlapping uv triangles, all
+// exact (atlas/atlas_score.h), whoever made it.
 
 #include "arguments.h"
 #include "cli_error.h"
@@ -10,7 +13,10 @@
 #include "obj_io.h"
 #include "output_files.h"
 
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/atlas/atlas_score.h>
+
 #include <iomanip>
+#include <cmath>
 #include <iostream>
 
 namespace dlf_cli {
@@ -27,12 +33,24 @@ int score_command(const std::vector<std::string>& args)
   // Per-corner uv (a map with seams) is measured on the mesh cut open.
   const Obj_map map = read_map_obj(s.parameterization, mesh);
   const Metrics m = compute_metrics(map.surface, map.uv);
+  namespace D = CGAL::Surface_mesh_parameterization::internal::dlf;
+  D::Atlas_score atlas;
+  if(map.per_corner) atlas = D::score_atlas(mesh.xyz, mesh.faces, map.uv, map.surface.faces);
 
   if(!s.report.empty() || !s.csv.empty()) {
     nlohmann::ordered_json report = { { "status", "ok" }, { "mesh", s.mesh }, { "parameterization", s.parameterization },
                                        { "vertices", mesh.xyz.size() }, { "faces", mesh.faces.size() },
                                        { "uv", map.per_corner ? "per_corner" : "per_vertex" },
                                        { "uv_vertices", map.uv.size() }, { "metrics", metrics_to_json(m) } };
+    if(map.per_corner)
+      report["atlas"] = { { "charts", atlas.charts }, { "seam_length", atlas.seam_length },
+                          { "seam_length_over_sqrt_area", atlas.seam_length / std::sqrt(atlas.surface_area) },
+                          { "packing_efficiency", atlas.packing_efficiency },
+                          { "uv_box", { atlas.bounding_width, atlas.bounding_height } }, { "d_area", atlas.metrics.d_area },
+                          { "inverted_faces", atlas.inverted_faces }, { "degenerate_faces", atlas.degenerate_faces },
+                          { "mirrored_charts", atlas.mirrored_charts },
+                          { "overlapping_face_pairs", atlas.overlapping_face_pairs },
+                          { "overlapping_pairs_in_a_chart", atlas.overlapping_pairs_in_a_chart } };
     if(!s.report.empty()) outputs.write(s.report, [&](std::ostream& o) { o << report.dump(2) << '\n'; });
     if(!s.csv.empty()) outputs.write(s.csv, [&](std::ostream& o) { write_csv_report(o, report); });
   }
@@ -43,6 +61,14 @@ int score_command(const std::vector<std::string>& args)
     if(map.per_corner) std::cout << ", per-corner uv (" << map.uv.size() << " vt: measured on the mesh cut open)";
     std::cout << "\n";
     print_metrics(std::cout, m, "  ");
+    if(map.per_corner)
+      std::cout << "  atlas: " << atlas.charts << " charts, seam length " << atlas.seam_length / std::sqrt(atlas.surface_area)
+                << " x sqrt(area), packing efficiency " << atlas.packing_efficiency << " (uv area / its bounding box "
+                << atlas.bounding_width << " x " << atlas.bounding_height << "), D_area " << atlas.metrics.d_area << ", "
+                << atlas.inverted_faces << " inverted (against their chart) and " << atlas.degenerate_faces
+                << " degenerate uv triangles, " << atlas.mirrored_charts << " mirrored charts, "
+                << atlas.overlapping_face_pairs << " overlapping uv triangle pairs (" << atlas.overlapping_pairs_in_a_chart
+                << " within a chart)\n";
     for(const std::string& w : outputs.committed()) std::cout << "  wrote " << w << "\n";
   }
   return EXIT_OK;

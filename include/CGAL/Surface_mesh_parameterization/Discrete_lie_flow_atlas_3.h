@@ -83,6 +83,9 @@ inline void flatten_atlas_chart(const Atlas_piece& piece, const Discrete_lie_flo
     if(length > longest) { longest = length; bhd = h; }
   }
   Discrete_lie_flow_options flow = opt.flow;
+  // Below the coarse-to-fine size a chart's flow is cheap to take further.
+  if(opt.small_chart_tolerance > 0 && piece.faces.size() < flow.disk.coarse_to_fine_faces)
+    flow.tolerance = (std::min)(flow.tolerance, opt.small_chart_tolerance);
   flow.face_density = piece.density;
   auto uvmap = mesh.add_property_map<Vertex_index, CGAL::Simple_cartesian<double>::Point_2>("v:atlas_uv").first;
   auto run = [&](auto& parameterizer) {
@@ -111,6 +114,10 @@ inline void flatten_atlas_chart(const Atlas_piece& piece, const Discrete_lie_flo
     run(parameterizer);
   }
   if(chart.code != OK) return;
+  // Converged is the atlas's tolerance (`flow.tolerance`); the small-chart
+  // tolerance is a goal beyond it, not a reason to split.
+  if(chart.stop_reason != Discrete_lie_flow_stop_reason::CONVERGED && chart.d_area - 2 <= opt.flow.tolerance)
+    chart.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED;
   uv.resize(piece.xyz.size());
   for(Vertex_index v : vertices(mesh)) uv[v] = {{ uvmap[v].x(), uvmap[v].y() }};
 }
@@ -147,7 +154,10 @@ inline void normalize_chart(const Atlas_piece& piece, std::vector<Vec2>& uv, dou
 /// certified flow of `Discrete_lie_flow_parameterizer_3` (square border by
 /// default), scaled to its share of the area; a chart whose flow does not
 /// converge is split in two geodesic halves, each flattened again (at most
-/// `options.max_split_depth` times). The charts are packed into the unit
+/// `options.max_split_depth` times); one that cannot be split gives up its
+/// triangles with three corners on its border, then is laid out triangle
+/// by triangle, each isometric (`report.peeled_faces`), so that every chart
+/// converges. The charts are packed into the unit
 /// square with `options.gutter` around each: by default each fills a cell of
 /// a squarified treemap, stretched to the cell's shape by an area-preserving
 /// affine map (u, v) → (a·u, v/a), which changes no area ratio

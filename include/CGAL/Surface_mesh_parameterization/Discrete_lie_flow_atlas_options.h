@@ -59,8 +59,27 @@ struct Discrete_lie_flow_atlas_options
   /// A chart whose flow does not converge is split in two (geodesic halves)
   /// and each half flattened again, at most this many times in a row.
   std::size_t max_split_depth = 3;
-  /// Charts of fewer faces are not split further.
+  /// Charts of fewer faces are not split further. A chart whose flow stops
+  /// short and that cannot be split (this size, `max_split_depth`) gives
+  /// each of its triangles a chart of its own, laid out isometrically
+  /// (exact): every chart of the atlas converges.
   std::size_t min_split_faces = 64;
+  /// Charts of fewer faces than `flow.disk.coarse_to_fine_faces` flow
+  /// toward D_area − 2 ≤ this (if below `flow.tolerance`); one that stops
+  /// within `flow.tolerance` counts as converged (not split): on meshes of planar
+  /// pieces another atlas's charts come within 0.002 of the optimum, and
+  /// below that size the further iterations cost little (bunny00, 75K
+  /// faces: 1.4× the time; doc/atlas.md). Larger charts keep
+  /// `flow.tolerance` (a 1.2M-face chart at 0.001 takes more than 70 s
+  /// instead of 55). 0: `flow.tolerance` everywhere.
+  double small_chart_tolerance = 1e-3;
+  /// A chart whose flow does not converge and that cannot be split gives
+  /// up its triangles with three corners on its border, at most this many
+  /// times in a row: the border fixes such a triangle's area, so the flow
+  /// cannot bring it to its share (the input's jagged borders, strips of a
+  /// cut). Each becomes a chart of its own, laid out isometrically (exact);
+  /// the rest is flattened again. 0: never (doc/atlas.md measures it).
+  std::size_t max_border_peels = 3;
   /// Called with one line per stage (cutting, each chart, packing); may be empty.
   std::function<void(const std::string&)> progress;
 };
@@ -95,6 +114,7 @@ struct Discrete_lie_flow_atlas_report
   std::size_t max_genus = 0;         ///< the largest genus of a component
   std::size_t charts = 0;            ///< charts in the atlas
   std::size_t splits = 0;            ///< charts split because their flow did not converge
+  std::size_t peeled_faces = 0;      ///< triangles made charts of their own: fixed by their chart's border (`max_border_peels`), or of a chart that could not be split further
   std::size_t unconverged_charts = 0; ///< charts whose flow stopped short of its tolerance (valid maps still)
   std::size_t three_border_corner_faces = 0; ///< triangles with all corners on their chart's border
   double seam_length = 0;            ///< 3D length of the edges cut open (the input's own border not counted)

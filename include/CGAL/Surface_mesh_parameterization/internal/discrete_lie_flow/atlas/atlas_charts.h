@@ -5,8 +5,11 @@
 // with holes (they float in the flow), is a chart; any other is cut
 // (atlas_cut_graph.h) and its parts go round again; a chart whose flow
 // does not converge is split in two (atlas_split.h) while the depth and
-// size allow. The flattening itself is the caller's function (the public
-// header runs the certified disk flow).
+// size allow; then it gives up its triangles with three border corners
+// (each a chart of its own, laid out isometrically), then it is laid out
+// triangle by triangle. The flattening
+// itself is the caller's function (the public header runs the certified
+// disk flow).
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_ATLAS_CHARTS_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_ATLAS_CHARTS_H
@@ -35,6 +38,39 @@ struct Atlas_chart
   Discrete_lie_flow_atlas_chart report;
 };
 
+/// The one triangle of `P` in the plane, isometric and counter-clockwise
+/// (its D_area is exactly optimal), its longest edge along u so that it
+/// fills half its box.
+inline std::vector<Vec2> lay_out_triangle(const Atlas_piece& P)
+{
+  std::size_t k = 0; // the longest edge: corner k to k + 1
+  double longest = -1;
+  for(std::size_t i = 0; i < 3; ++i) {
+    const double l = norm3(sub(P.xyz[std::size_t(P.faces[0][(i + 1) % 3])], P.xyz[std::size_t(P.faces[0][i])]));
+    if(l > longest) { longest = l; k = i; }
+  }
+  const int ia = P.faces[0][k], ib = P.faces[0][(k + 1) % 3], ic = P.faces[0][(k + 2) % 3];
+  const Vec3 ab = sub(P.xyz[std::size_t(ib)], P.xyz[std::size_t(ia)]), ac = sub(P.xyz[std::size_t(ic)], P.xyz[std::size_t(ia)]);
+  std::vector<Vec2> uv(P.xyz.size(), Vec2{{ 0, 0 }});
+  uv[std::size_t(ib)] = {{ longest, 0 }};
+  uv[std::size_t(ic)] = {{ dot(ab, ac) / longest, norm3(cross(ab, ac)) / longest }};
+  return uv;
+}
+
+/// The faces of `P` with all three corners on its border.
+inline std::vector<char> three_border_corner_mask(const Atlas_piece& P, const std::vector<long>& twin)
+{
+  std::vector<char> on_border(P.xyz.size(), 0), mask(P.faces.size(), 0);
+  for(std::size_t h = 0; h < twin.size(); ++h)
+    if(twin[h] < 0) {
+      on_border[std::size_t(P.faces[h / 3][h % 3])] = 1;
+      on_border[std::size_t(P.faces[h / 3][(h % 3 + 1) % 3])] = 1;
+    }
+  for(std::size_t f = 0; f < P.faces.size(); ++f)
+    mask[f] = on_border[std::size_t(P.faces[f][0])] && on_border[std::size_t(P.faces[f][1])] && on_border[std::size_t(P.faces[f][2])];
+  return mask;
+}
+
 /// One piece per face of `P`.
 inline std::vector<Atlas_piece> single_faces(const Atlas_piece& P)
 {
@@ -52,9 +88,9 @@ Error_code make_atlas_charts(std::vector<Atlas_piece> components, const Discrete
                              Flatten flatten, std::vector<Atlas_chart>& charts, Discrete_lie_flow_atlas_report& R)
 {
   typedef std::chrono::steady_clock Clock;
-  struct Item { Atlas_piece piece; std::size_t depth; bool cut; };
+  struct Item { Atlas_piece piece; std::size_t depth; bool cut; std::size_t peels; };
   std::deque<Item> work;
-  for(Atlas_piece& c : components) work.push_back(Item{ std::move(c), 0, false });
+  for(Atlas_piece& c : components) work.push_back(Item{ std::move(c), 0, false, 0 });
   while(!work.empty()) {
     Item it = std::move(work.front());
     work.pop_front();
@@ -69,7 +105,7 @@ Error_code make_atlas_charts(std::vector<Atlas_piece> components, const Discrete
       const std::vector<char> seam = piece_seam(it.piece, twin, T, opt.tips, length);
       Atlas_piece opened = it.piece;
       open_along(opened, twin, seam);
-      for(Atlas_piece& part : split_components(opened)) work.push_back(Item{ std::move(part), it.depth, true });
+      for(Atlas_piece& part : split_components(opened)) work.push_back(Item{ std::move(part), it.depth, true, 0 });
       R.seconds_cut += std::chrono::duration<double>(Clock::now() - t0).count();
       continue;
     }
@@ -79,7 +115,7 @@ Error_code make_atlas_charts(std::vector<Atlas_piece> components, const Discrete
       // Tiny closed pieces (a tetrahedron) may have no seam that leaves a
       // disk with a triangle between seams: one chart per triangle then.
       if(halves.size() < 2 || it.depth >= opt.max_split_depth + 4) halves = single_faces(it.piece);
-      for(Atlas_piece& h : halves) work.push_back(Item{ std::move(h), it.depth + 1, false });
+      for(Atlas_piece& h : halves) work.push_back(Item{ std::move(h), it.depth + 1, false, 0 });
       continue;
     }
     Atlas_chart C;
@@ -93,7 +129,14 @@ Error_code make_atlas_charts(std::vector<Atlas_piece> components, const Discrete
     if(opt.progress)
       opt.progress("chart of " + std::to_string(C.report.faces) + " faces" +
                    (it.depth > 0 ? " (split " + std::to_string(it.depth) + ")" : std::string()));
-    flatten(it.piece, C.uv, C.report);
+    if(it.piece.faces.size() == 1) { // no flow needed
+      C.uv = lay_out_triangle(it.piece);
+      C.report.code = OK;
+      C.report.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED;
+      C.report.d_area = 2;
+    }
+    else
+      flatten(it.piece, C.uv, C.report);
     R.seconds_flow += std::chrono::duration<double>(Clock::now() - t1).count();
     const bool good = C.report.code == OK && C.report.stop_reason == Discrete_lie_flow_stop_reason::CONVERGED;
     if(!good && it.depth < opt.max_split_depth && it.piece.faces.size() >= opt.min_split_faces) {
@@ -102,12 +145,33 @@ Error_code make_atlas_charts(std::vector<Atlas_piece> components, const Discrete
       R.seconds_cut += std::chrono::duration<double>(Clock::now() - t2).count();
       if(halves.size() >= 2) {
         ++R.splits;
-        for(Atlas_piece& h : halves) work.push_back(Item{ std::move(h), it.depth + 1, false });
+        for(Atlas_piece& h : halves) work.push_back(Item{ std::move(h), it.depth + 1, false, 0 });
         continue;
       }
     }
-    if(C.report.code != OK && it.piece.faces.size() > 1) { // no split left: one chart per triangle
-      for(Atlas_piece& h : single_faces(it.piece)) work.push_back(Item{ std::move(h), it.depth + 1, false });
+    // No split left: the triangles the border pins leave first.
+    if(!good && C.report.three_border_corner_faces > 0 && it.peels < opt.max_border_peels) {
+      const std::vector<char> fixed = three_border_corner_mask(it.piece, twin);
+      std::vector<std::size_t> rest;
+      for(std::size_t f = 0; f < fixed.size(); ++f)
+        if(fixed[f]) {
+          work.push_back(Item{ sub_piece(it.piece, std::vector<std::size_t>(1, f)), it.depth, false, it.peels + 1 });
+          ++R.peeled_faces;
+        }
+        else
+          rest.push_back(f);
+      if(!rest.empty())
+        for(Atlas_piece& part : split_components(sub_piece(it.piece, rest)))
+          work.push_back(Item{ std::move(part), it.depth, false, it.peels + 1 });
+      continue;
+    }
+    // No split left (the depth, the size, or no two halves): one chart per
+    // triangle, each laid out isometrically, when the flow failed or
+    // stopped short (a few interior vertices cannot bring every triangle to
+    // its share).
+    if((C.report.code != OK || !good) && it.piece.faces.size() > 1) {
+      for(Atlas_piece& h : single_faces(it.piece)) work.push_back(Item{ std::move(h), it.depth + 1, false, 0 });
+      if(C.report.code == OK) R.peeled_faces += it.piece.faces.size();
       continue;
     }
     if(C.report.code != OK) {
