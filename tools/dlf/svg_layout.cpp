@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace dlf_cli {
 
@@ -22,8 +23,9 @@ const double layout_size = 760, margin = 20, legend_width = 150;
 } // namespace
 
 void write_svg_layout(std::ostream& out, const Indexed_mesh& mesh, const std::vector<Vec2>& uv,
-                      const std::string& caption, const std::vector<double>& face_density,
-                      const std::vector<std::array<int, 2> >& outline, const std::string& outline_label)
+                      const std::string& caption, const Svg_options& style, const std::vector<double>& face_density,
+                      const std::vector<std::array<int, 2> >& outline, const std::string& outline_label,
+                      const std::vector<int>& shaded)
 {
   const std::size_t F = mesh.faces.size();
   // Per face: surface area, domain area, exact orientation; the majority
@@ -44,6 +46,14 @@ void write_svg_layout(std::ostream& out, const Indexed_mesh& mesh, const std::ve
   }
   const int majority = balance >= 0 ? 1 : -1;
   const double scale2 = sum2 > 0 ? sum3 / sum2 : 1.;
+  // Raw: a3 without ρ, so that the ratio is ρ where the map reached its target.
+  std::vector<double> log_ratio(F, std::numeric_limits<double>::quiet_NaN());
+  for(std::size_t f = 0; f < F; ++f)
+    if(sign[f] == majority && a2[f] > 0)
+      log_ratio[f] = std::log(a2[f] * scale2 / a3[f]) + (style.raw() && !face_density.empty() ? std::log(face_density[f]) : 0.);
+  const double scale_end = colour_scale_end(log_ratio, style.fixed_scale());
+  std::vector<char> in_region(F, 0);
+  for(int f : shaded) in_region[std::size_t(f)] = 1;
 
   double x0 = uv.empty() ? 0 : uv[0][0], x1 = x0, y0 = uv.empty() ? 0 : uv[0][1], y1 = y0;
   for(const Vec2& p : uv) {
@@ -72,15 +82,35 @@ void write_svg_layout(std::ostream& out, const Indexed_mesh& mesh, const std::ve
       }
       text << "\" fill=\"" << colour << "\" stroke=\"" << colour << "\"/>\n";
     };
+    // The shaded faces in a group of their own (id "region-faces"), so that
+    // their colours can be told from the others'.
     text << "<g transform=\"translate(0,24)\" stroke-linejoin=\"round\">\n<g stroke-width=\"0.3\">\n";
-    for(std::size_t f = 0; f < F; ++f) {
-      if(sign[f] != majority || !(a2[f] > 0)) { bad_faces.push_back(f); continue; }
-      draw(f, colour_of_log_ratio(std::log(a2[f] * scale2 / a3[f])));
+    for(int pass = 0; pass < (shaded.empty() ? 1 : 2); ++pass) {
+      if(pass == 1) text << "</g>\n<g id=\"region-faces\" stroke-width=\"0.3\">\n";
+      for(std::size_t f = 0; f < F; ++f) {
+        if(in_region[f] != pass) continue;
+        if(!std::isfinite(log_ratio[f])) { bad_faces.push_back(f); continue; }
+        draw(f, colour_of_log_ratio(log_ratio[f], scale_end));
+      }
     }
     text << "</g>\n<g stroke-width=\"1.5\">\n";
     const std::string black = "#000000";
     for(std::size_t f : bad_faces) draw(f, black);
     text << "</g>\n";
+    if(!shaded.empty()) {
+      // One path for all the shaded triangles: filled once, without seams.
+      text << "<path id=\"region-shade\" fill=\"#222\" fill-opacity=\"0.15\" stroke=\"none\" d=\"";
+      for(int f : shaded) {
+        const Triangle& t = mesh.faces[std::size_t(f)];
+        for(int k = 0; k < 3; ++k) {
+          text << (k == 0 ? 'M' : 'L');
+          text.fixed2(margin + (uv[t[k]][0] - x0) * s) << ',';
+          text.fixed2(margin + (y1 - uv[t[k]][1]) * s);
+        }
+        text << 'Z';
+      }
+      text << "\"/>\n";
+    }
     if(!outline.empty()) {
       text << "<path fill=\"none\" stroke=\"#111\" stroke-width=\"1.5\" stroke-linecap=\"round\" d=\"";
       for(const std::array<int, 2>& e : outline) {
@@ -94,11 +124,18 @@ void write_svg_layout(std::ostream& out, const Indexed_mesh& mesh, const std::ve
     }
   }
   out << "</g>\n";
-  write_colour_bar(out, 2 * margin + (x1 - x0) * s + 20, margin + 24 + 20, 240, !bad_faces.empty(), !face_density.empty());
+  write_colour_bar(out, 2 * margin + (x1 - x0) * s + 20, margin + 24 + 20, 240, !bad_faces.empty(),
+                   ratio_quantity(style.raw(), !face_density.empty()), scale_end);
   if(!outline.empty())
-    out << "<line x1=\"" << 2 * margin + (x1 - x0) * s + 20 << "\" y1=\"" << margin + 24 + 20 + 240 + 56 << "\" x2=\""
-        << 2 * margin + (x1 - x0) * s + 32 << "\" y2=\"" << margin + 24 + 20 + 240 + 56 << "\" stroke=\"#111\" stroke-width=\"1.5\"/>"
-        << "<text x=\"" << 2 * margin + (x1 - x0) * s + 38 << "\" y=\"" << margin + 24 + 20 + 240 + 60 << "\">" << xml_escape(outline_label) << "</text>\n";
+    out << (shaded.empty() ? "<line x1=\"" : "<rect fill=\"#222\" fill-opacity=\"0.15\" stroke=\"#111\" stroke-width=\"1.5\" x=\"")
+        << 2 * margin + (x1 - x0) * s + 20;
+  if(!outline.empty() && shaded.empty())
+    out << "\" y1=\"" << margin + 24 + 20 + 240 + colour_bar_legend + 12 << "\" x2=\""
+        << 2 * margin + (x1 - x0) * s + 32 << "\" y2=\"" << margin + 24 + 20 + 240 + colour_bar_legend + 12 << "\" stroke=\"#111\" stroke-width=\"1.5\"/>";
+  else if(!outline.empty())
+    out << "\" y=\"" << margin + 24 + 20 + 240 + colour_bar_legend + 6 << "\" width=\"12\" height=\"12\"/>";
+  if(!outline.empty())
+    out << "<text x=\"" << 2 * margin + (x1 - x0) * s + 38 << "\" y=\"" << margin + 24 + 20 + 240 + colour_bar_legend + 16 << "\">" << xml_escape(outline_label) << "</text>\n";
   out << "</svg>\n";
 }
 
