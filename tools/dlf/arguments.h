@@ -39,7 +39,7 @@ struct Svg_options
 {
   std::string colour;             ///< prescribed | raw; empty until resolved: raw with a density, else prescribed
   std::string scale = "fitted";   ///< fitted (to the run's range) | fixed (1/4 to 4)
-  std::size_t max_faces = 200000; ///< more faces than this: the triangles are drawn as one embedded PNG
+  std::size_t max_faces = 50000;  ///< more faces than this: the triangles are drawn as one embedded PNG
   bool raw() const { return colour == "raw"; }
   bool fixed_scale() const { return scale == "fixed"; }
 };

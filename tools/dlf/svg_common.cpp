@@ -126,7 +126,7 @@ std::string xml_escape(const std::string& s)
 void write_svg_header(std::ostream& out, double width, double height, const std::string& caption)
 {
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << std::ceil(width) << "\" height=\"" << std::ceil(height)
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" width=\"" << std::ceil(width) << "\" height=\"" << std::ceil(height)
       << "\" viewBox=\"0 0 " << std::ceil(width) << ' ' << std::ceil(height)
       << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
       << "<title>" << xml_escape(caption) << "</title>\n"

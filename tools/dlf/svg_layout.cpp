@@ -3,6 +3,7 @@
 
 #include "svg_layout.h"
 #include "svg_common.h"
+#include "svg_raster.h"
 #include "text_buffer.h"
 
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/certification.h>
@@ -11,6 +12,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <sstream>
 
 namespace dlf_cli {
 
@@ -19,6 +22,8 @@ namespace {
 namespace D = CGAL::Surface_mesh_parameterization::internal::dlf;
 
 const double layout_size = 760, margin = 20, legend_width = 150;
+// Pixels a unit of the rasterised faces: 1520 a side, sharp when zoomed in twice.
+const double raster_pixels = 2;
 
 } // namespace
 
@@ -70,15 +75,26 @@ void write_svg_layout(std::ostream& out, const Indexed_mesh& mesh, const std::ve
   // would be invisible, and they are what a reader looks for. A thin stroke
   // in the fill colour hides the hairline seams that anti-aliasing draws
   // between adjacent triangles.
+  // Beyond the face budget, the faces are rasterised (svg_raster.h); the
+  // folded ones stay polygons unless they too exceed it.
+  const bool raster = F > style.max_faces;
+  std::unique_ptr<Triangle_raster> canvas;
+  if(raster) canvas.reset(new Triangle_raster(margin - 1, margin - 1, (x1 - x0) * s + 2, (y1 - y0) * s + 2, raster_pixels));
+  const double shade = 0.15; // the opacity of the regions' shade
   std::vector<std::size_t> bad_faces;
   {
     Text_buffer text(out);
-    auto draw = [&](std::size_t f, const std::string& colour) {
+    auto point = [&](int v) { return std::array<double, 2>{{ margin + (uv[v][0] - x0) * s, margin + (y1 - uv[v][1]) * s }}; }; // SVG's y axis points down
+    auto draw = [&](std::size_t f, const std::string& colour, bool as_pixels) {
       const Triangle& t = mesh.faces[f];
+      if(as_pixels) {
+        canvas->fill(point(t[0]).data(), point(t[1]).data(), point(t[2]).data(), colour, in_region[f] ? shade : 0.);
+        return;
+      }
       text << "<polygon points=\"";
       for(int k = 0; k < 3; ++k) {
-        text.fixed2(margin + (uv[t[k]][0] - x0) * s) << ',';
-        text.fixed2(margin + (y1 - uv[t[k]][1]) * s) << (k < 2 ? " " : ""); // SVG's y axis points down
+        text.fixed2(point(t[k])[0]) << ',';
+        text.fixed2(point(t[k])[1]) << (k < 2 ? " " : "");
       }
       text << "\" fill=\"" << colour << "\" stroke=\"" << colour << "\"/>\n";
     };
@@ -90,22 +106,31 @@ void write_svg_layout(std::ostream& out, const Indexed_mesh& mesh, const std::ve
       for(std::size_t f = 0; f < F; ++f) {
         if(in_region[f] != pass) continue;
         if(!std::isfinite(log_ratio[f])) { bad_faces.push_back(f); continue; }
-        draw(f, colour_of_log_ratio(log_ratio[f], scale_end));
+        draw(f, colour_of_log_ratio(log_ratio[f], scale_end), raster);
       }
     }
-    text << "</g>\n<g stroke-width=\"1.5\">\n";
-    const std::string black = "#000000";
-    for(std::size_t f : bad_faces) draw(f, black);
     text << "</g>\n";
-    if(!shaded.empty()) {
+    const std::string black = "#000000";
+    if(raster) {
+      if(bad_faces.size() > style.max_faces)
+        for(std::size_t f : bad_faces) draw(f, black, true);
+      std::ostringstream image;
+      canvas->write_image(image, "faces");
+      text << image.str();
+    }
+    text << "<g stroke-width=\"1.5\">\n";
+    if(!raster || bad_faces.size() <= style.max_faces)
+      for(std::size_t f : bad_faces) draw(f, black, false);
+    text << "</g>\n";
+    if(!shaded.empty() && !raster) {
       // One path for all the shaded triangles: filled once, without seams.
-      text << "<path id=\"region-shade\" fill=\"#222\" fill-opacity=\"0.15\" stroke=\"none\" d=\"";
+      text << "<path id=\"region-shade\" fill=\"#222\" fill-opacity=\"0.15\" stroke=\"none\" d=\""; // `shade`
       for(int f : shaded) {
         const Triangle& t = mesh.faces[std::size_t(f)];
         for(int k = 0; k < 3; ++k) {
           text << (k == 0 ? 'M' : 'L');
-          text.fixed2(margin + (uv[t[k]][0] - x0) * s) << ',';
-          text.fixed2(margin + (y1 - uv[t[k]][1]) * s);
+          text.fixed2(point(t[k])[0]) << ',';
+          text.fixed2(point(t[k])[1]);
         }
         text << 'Z';
       }

@@ -3,9 +3,12 @@
 
 #include "svg_sphere.h"
 #include "svg_common.h"
+#include "svg_raster.h"
 #include "text_buffer.h"
 
 #include <cmath>
+#include <memory>
+#include <sstream>
 
 namespace dlf_cli {
 
@@ -13,6 +16,8 @@ namespace {
 
 const double disc_radius = 300, disc_margin = 20, disc_top = 44, disc_legend_width = 150;
 const std::string fold_colour = "#000000";
+// Pixels a unit of the rasterised faces: 1200 a disc's width.
+const double raster_pixels = 2;
 
 } // namespace
 
@@ -54,6 +59,10 @@ void write_svg_sphere(std::ostream& out, const Indexed_mesh& mesh, const std::ve
         text.fixed2(cy - sphere[t[k]][1] * disc_radius) << (k < 2 ? separator : "");
       }
     };
+    // Beyond the face budget, the faces are rasterised (svg_raster.h).
+    const bool raster = mesh.faces.size() > style.max_faces;
+    std::unique_ptr<Triangle_raster> canvas;
+    if(raster) canvas.reset(new Triangle_raster(0, cy - disc_radius - 1, 4 * disc_margin + 4 * disc_radius, 2 * disc_radius + 2, raster_pixels));
     // The shaded faces in a group of their own (id "region-faces").
     text << "<g stroke-linejoin=\"round\" stroke-width=\"0.3\">\n";
     for(int pass = 0; pass < (shaded.empty() ? 1 : 2); ++pass) {
@@ -63,13 +72,30 @@ void write_svg_sphere(std::ostream& out, const Indexed_mesh& mesh, const std::ve
         const bool bad = !std::isfinite(log_ratio[f]);
         has_bad_faces = has_bad_faces || bad;
         const std::string& colour = bad ? fold_colour : colour_of_log_ratio(log_ratio[f], scale_end);
+        if(raster) {
+          const Triangle& t = mesh.faces[f];
+          const int view = view_of(t);
+          const double mirror = view == 0 ? 1 : -1;
+          double p[3][2];
+          for(int k = 0; k < 3; ++k) {
+            p[k][0] = cx[view] + mirror * sphere[t[k]][0] * disc_radius;
+            p[k][1] = cy - sphere[t[k]][1] * disc_radius;
+          }
+          canvas->fill(p[0], p[1], p[2], colour, in_region[f] ? 0.15 : 0.);
+          continue;
+        }
         text << "<polygon points=\"";
         points(mesh.faces[f], " ", "", "");
         text << "\" fill=\"" << colour << "\" stroke=\"" << colour << "\"/>\n";
       }
     }
     text << "</g>\n";
-    if(!shaded.empty()) {
+    if(raster) {
+      std::ostringstream image;
+      canvas->write_image(image, "faces");
+      text << image.str();
+    }
+    if(!shaded.empty() && !raster) {
       // One path for all the shaded triangles: filled once, without seams.
       text << "<path id=\"region-shade\" fill=\"#222\" fill-opacity=\"0.15\" stroke=\"none\" d=\"";
       for(int f : shaded) {
