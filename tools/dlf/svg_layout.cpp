@@ -74,13 +74,13 @@ void write_svg_layout(std::ostream& out, const Indexed_mesh& mesh, const std::ve
   // Folded and flat triangles last, outlined: under their neighbours they
   // would be invisible, and they are what a reader looks for. A thin stroke
   // in the fill colour hides the hairline seams that anti-aliasing draws
-  // between adjacent triangles.
-  // Beyond the face budget, the faces are rasterised (svg_raster.h); the
-  // folded ones stay polygons unless they too exceed it.
+  // between adjacent triangles. Beyond the face budget, the faces are
+  // rasterised (svg_raster.h); the folded ones stay polygons unless they
+  // too exceed it.
   const bool raster = F > style.max_faces;
   std::unique_ptr<Triangle_raster> canvas;
   if(raster) canvas.reset(new Triangle_raster(margin - 1, margin - 1, (x1 - x0) * s + 2, (y1 - y0) * s + 2, raster_pixels));
-  const double shade = 0.15; // the opacity of the regions' shade
+  const double shade = 0.15; // the opacity of the regions' shade (as written below)
   std::vector<std::size_t> bad_faces;
   {
     Text_buffer text(out);
@@ -124,7 +124,7 @@ void write_svg_layout(std::ostream& out, const Indexed_mesh& mesh, const std::ve
     text << "</g>\n";
     if(!shaded.empty() && !raster) {
       // One path for all the shaded triangles: filled once, without seams.
-      text << "<path id=\"region-shade\" fill=\"#222\" fill-opacity=\"0.15\" stroke=\"none\" d=\""; // `shade`
+      text << "<path id=\"region-shade\" fill=\"#222\" fill-opacity=\"0.15\" stroke=\"none\" d=\"";
       for(int f : shaded) {
         const Triangle& t = mesh.faces[std::size_t(f)];
         for(int k = 0; k < 3; ++k) {
@@ -151,16 +151,17 @@ void write_svg_layout(std::ostream& out, const Indexed_mesh& mesh, const std::ve
   out << "</g>\n";
   write_colour_bar(out, 2 * margin + (x1 - x0) * s + 20, margin + 24 + 20, 240, !bad_faces.empty(),
                    ratio_quantity(style.raw(), !face_density.empty()), scale_end);
-  if(!outline.empty())
-    out << (shaded.empty() ? "<line x1=\"" : "<rect fill=\"#222\" fill-opacity=\"0.15\" stroke=\"#111\" stroke-width=\"1.5\" x=\"")
-        << 2 * margin + (x1 - x0) * s + 20;
-  if(!outline.empty() && shaded.empty())
-    out << "\" y1=\"" << margin + 24 + 20 + 240 + colour_bar_legend + 12 << "\" x2=\""
-        << 2 * margin + (x1 - x0) * s + 32 << "\" y2=\"" << margin + 24 + 20 + 240 + colour_bar_legend + 12 << "\" stroke=\"#111\" stroke-width=\"1.5\"/>";
-  else if(!outline.empty())
-    out << "\" y=\"" << margin + 24 + 20 + 240 + colour_bar_legend + 6 << "\" width=\"12\" height=\"12\"/>";
-  if(!outline.empty())
-    out << "<text x=\"" << 2 * margin + (x1 - x0) * s + 38 << "\" y=\"" << margin + 24 + 20 + 240 + colour_bar_legend + 16 << "\">" << xml_escape(outline_label) << "</text>\n";
+  if(!outline.empty()) {
+    // The key: a shaded square for regions, a line for the outlines of density pieces.
+    const double kx = 2 * margin + (x1 - x0) * s + 20, ky = margin + 24 + 20 + 240 + colour_bar_legend;
+    if(shaded.empty())
+      out << "<line x1=\"" << kx << "\" y1=\"" << ky + 12 << "\" x2=\"" << kx + 12 << "\" y2=\"" << ky + 12
+          << "\" stroke=\"#111\" stroke-width=\"1.5\"/>";
+    else
+      out << "<rect x=\"" << kx << "\" y=\"" << ky + 6 << "\" width=\"12\" height=\"12\" fill=\"#222\" fill-opacity=\"0.15\" "
+          << "stroke=\"#111\" stroke-width=\"1.5\"/>";
+    out << "<text x=\"" << kx + 18 << "\" y=\"" << ky + 16 << "\">" << xml_escape(outline_label) << "</text>\n";
+  }
   out << "</svg>\n";
 }
 
