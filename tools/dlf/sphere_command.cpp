@@ -79,7 +79,7 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
      "the report as CSV: a header and one row, the JSON report's keys flattened (final.d_area, seconds.flow)")
     ("svg", po::value<std::string>(&s.svg)->value_name("VIEW.svg"),
      "draw the sphere from +z and from -z (orthographic), triangles coloured by area ratio (--svg-colour), "
-     "the regions of interest shaded and outlined");
+     "the regions of interest shaded");
   add_svg_options(visible, s.svg_options);
   visible.add_options()
     ("plot-convergence", po::value<std::string>(&s.convergence_svg)->value_name("PLOT.svg"),
