@@ -1065,6 +1065,166 @@ done
 check "atlas on a point cloud says so" grep -q "point cloud" cloud.err
 check "atlas on all-degenerate faces says so" grep -q "all 2 faces are degenerate" flat.err
 
+# --- pictures of measure control: raw colours, fitted scales, face budget ------
+# svg_facts FILE: after parsing FILE as XML, one "key value" a line: the
+# colour bar's scale (scale_max, scale_min) and top label (top_label), the
+# polygons and images drawn, the region shade's opacity (shade, none if
+# absent), and the mean of red - blue over the fills of the region's faces
+# (region_red) and of the others (rest_red): about 0 for white, > 0 red.
+svg_facts() { python3 - "$1" <<'PY'
+import sys, xml.etree.ElementTree as ET
+root = ET.parse(sys.argv[1]).getroot()
+name = lambda e: e.tag.split("}")[-1]
+bar = next(e for e in root.iter() if e.get("id") == "colour-bar")
+print("scale_max", bar.get("data-scale-max")); print("scale_min", bar.get("data-scale-min"))
+print("top_label", [t.text for t in bar.iter() if name(t) == "text"][0])
+print("polygons", sum(1 for e in root.iter() if name(e) == "polygon"))
+print("images", sum(1 for e in root.iter() if name(e) == "image"))
+shade = [e for e in root.iter() if e.get("id") == "region-shade"]
+print("shade", shade[0].get("fill-opacity") if shade else "none")
+def red(group):
+    fills = [e.get("fill") for e in group.iter() if name(e) == "polygon"]
+    return sum(int(f[1:3], 16) - int(f[5:7], 16) for f in fills) / max(1, len(fills))
+region = [e for e in root.iter() if e.get("id") == "region-faces"]
+rest = [e for e in root.iter() if name(e) == "g" and e.get("stroke-width") == "0.3" and e.get("id") is None]
+print("region_red", red(region[0]) if region else "none")
+print("rest_red", red(rest[0]) if rest else "none")
+PY
+}
+fact() { svg_facts "$1" | awk -v k="$2" '$1 == k { print $2 }'; }
+# raw_ratio_range MESH MAP CX CY CZ R FACTOR: the largest domain / surface
+# ratio or its inverse over the faces, recomputed as the picture defines it:
+# density FACTOR on the faces whose centroid lies in the ball, 1 elsewhere,
+# the domain scaled to the area sum of density x area.
+raw_ratio_range() { python3 - "$@" <<'PY'
+import math, sys
+mesh, obj, cx, cy, cz, r, factor = sys.argv[1], sys.argv[2], *map(float, sys.argv[3:8])
+tokens = [t for t in (l.split('#')[0].split() for l in open(mesh)) if t]
+nv, nf = int(tokens[1][0]), int(tokens[1][1])
+xyz = [tuple(map(float, t[:3])) for t in tokens[2:2 + nv]]
+faces = [tuple(map(int, t[1:4])) for t in tokens[2 + nv:2 + nv + nf]]
+vt = [tuple(map(float, l.split()[1:3])) for l in open(obj) if l.startswith("vt ")]
+def area3(a, b, c):
+    u = [b[i] - a[i] for i in range(3)]; w = [c[i] - a[i] for i in range(3)]
+    return 0.5 * math.sqrt((u[1] * w[2] - u[2] * w[1]) ** 2 + (u[2] * w[0] - u[0] * w[2]) ** 2 + (u[0] * w[1] - u[1] * w[0]) ** 2)
+def area2(a, b, c): return 0.5 * abs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]))
+rho = [factor if sum((sum(xyz[i][k] for i in f) / 3 - (cx, cy, cz)[k]) ** 2 for k in range(3)) <= r * r else 1 for f in faces]
+a3 = [area3(*(xyz[i] for i in f)) for f in faces]
+a2 = [area2(*(vt[i] for i in f)) for f in faces]
+scale = sum(p * a for p, a in zip(rho, a3)) / sum(a2)
+print(math.exp(max(abs(math.log(b * scale / a)) for a, b in zip(a3, a2))))
+PY
+}
+BALL="-0.215988 -0.081660 0.215680 1"
+"$DLF" disk "$NEF" --roi-ball $BALL --factor 4 -o mag.obj --report mag.json --svg mag.svg > mag.out
+check "4x region: exit 0" equals "$?" 0
+check "4x region: magnification within 1% of 4" python3 -c \
+  "import json, sys; r = json.load(open('mag.json'))['regions'][0]; sys.exit(not (abs(r['magnification'] - 4) <= 0.04 and r['prescribed_magnification'] == 4))"
+check "4x region: magnification = achieved / prescribed share x factor, surface share < prescribed share" python3 -c \
+  "import json, sys; r = json.load(open('mag.json'))['regions'][0]; sys.exit(not (abs(r['magnification'] - r['achieved_fraction'] / r['prescribed_fraction'] * 4) < 1e-9 and 0 < r['surface_fraction'] < r['prescribed_fraction']))"
+check "4x region: surface share recomputed" python3 - "$NEF" mag.json <<'PY'
+import json, math, sys
+tokens = [t for t in (l.split('#')[0].split() for l in open(sys.argv[1])) if t]
+nv, nf = int(tokens[1][0]), int(tokens[1][1])
+xyz = [tuple(map(float, t[:3])) for t in tokens[2:2 + nv]]
+faces = [tuple(map(int, t[1:4])) for t in tokens[2 + nv:2 + nv + nf]]
+c, r = (-0.215988, -0.081660, 0.215680), 1
+def area3(a, b, d):
+    u = [b[i] - a[i] for i in range(3)]; w = [d[i] - a[i] for i in range(3)]
+    return 0.5 * math.sqrt((u[1] * w[2] - u[2] * w[1]) ** 2 + (u[2] * w[0] - u[0] * w[2]) ** 2 + (u[0] * w[1] - u[1] * w[0]) ** 2)
+inside = total = 0
+for f in faces:
+    a = area3(*(xyz[i] for i in f)); total += a
+    if sum((sum(xyz[i][k] for i in f) / 3 - c[k]) ** 2 for k in range(3)) <= r * r: inside += a
+got = json.load(open(sys.argv[2]))['regions'][0]['surface_fraction']
+sys.exit(not abs(got - inside / total) <= 1e-9)
+PY
+check "4x region: the summary gives the surface share and the magnification" \
+  grep -Eq "region roi-ball .*: factor 4, [0-9]+ faces, 0\.[0-9]+ of the surface; .*magnification (3\.9[6-9]|4\.0[0-4]|4)[0-9]* \(prescribed 4\)" mag.out
+check "4x region SVG: raw colours by default, the region red, the rest about white" python3 -c "
+import sys; f = dict(l.split() for l in sys.stdin)
+sys.exit(not (float(f['region_red']) > 100 and abs(float(f['rest_red'])) < 20))" < <(svg_facts mag.svg)
+check "4x region SVG: the region is shaded (filled), not only outlined" equals "$(fact mag.svg shade)" 0.15
+MAG_RANGE=$(raw_ratio_range "$NEF" mag.obj $BALL 4)
+check "4x region SVG: the fitted scale spans the run's range, rounded up to 2 digits" python3 -c "
+import sys; e, m = float(sys.argv[1]), float(sys.argv[2]); lo = float(sys.argv[3])
+sys.exit(not (m >= 3.9 and m <= e <= 1.1 * m + 1e-9 and abs(lo * e - 1) < 1e-12))" \
+  "$(fact mag.svg scale_max)" "$MAG_RANGE" "$(fact mag.svg scale_min)"
+check "4x region SVG: the colour bar's top label is the scale's end" \
+  equals "$(fact mag.svg top_label)" "$(python3 -c "import sys; print('%.3g' % float(sys.argv[1]))" "$(fact mag.svg scale_max)")"
+"$DLF" disk "$NEF" --roi-ball $BALL --factor 4 --svg mag_p.svg --svg-colour prescribed --svg-scale fixed -q
+check "--svg-colour prescribed: the converged region about white like the rest" python3 -c "
+import sys; f = dict(l.split() for l in sys.stdin)
+sys.exit(not (abs(float(f['region_red'])) < 20 and abs(float(f['rest_red'])) < 20))" < <(svg_facts mag_p.svg)
+check "--svg-scale fixed: 1/4 to 4" equals "$(fact mag_p.svg scale_min) $(fact mag_p.svg scale_max) $(fact mag_p.svg top_label)" "0.25 4 4"
+"$DLF" disk "$NEF" --svg plain.svg -q
+check "no density: the fitted scale of a converged map has its floor (1.1 or more)" \
+  number_is "$(fact plain.svg scale_max)" ">=" 1.1
+check "no density: the bar names domain / surface" grep -q ">domain / surface<" plain.svg
+"$DLF" sphere "$MESHES/sphere.off" --roi-ball 0 0 1 0.8 --factor 4 --report sph_mag.json --svg sph_mag.svg > sph_mag.out
+check "sphere 4x region: magnification within 1% of 4" python3 -c \
+  "import json, sys; r = json.load(open('sph_mag.json'))['regions'][0]; sys.exit(not (abs(r['magnification'] - 4) <= 0.04 and 0 < r['surface_fraction'] < r['prescribed_fraction']))"
+check "sphere 4x region SVG: the region red, the rest about white, shaded" python3 -c "
+import sys; f = dict(l.split() for l in sys.stdin)
+sys.exit(not (float(f['region_red']) > 100 and abs(float(f['rest_red'])) < 20 and f['shade'] == '0.15' and float(f['scale_max']) >= 3.9))" < <(svg_facts sph_mag.svg)
+check "sphere 4x region: the summary gives the magnification" grep -q "magnification .* (prescribed 4)" sph_mag.out
+# The face budget: beyond it, one embedded PNG and no polygon.
+"$DLF" disk "$NEF" --roi-ball $BALL --factor 4 --svg budget.svg --svg-max-faces 100 -q
+check "--svg-max-faces below the faces: one image, no polygon" \
+  equals "$(fact budget.svg images) $(fact budget.svg polygons)" "1 0"
+check "--svg-max-faces: the image is a PNG of the picture's triangles (region red, rest white)" python3 - budget.svg <<'PY'
+import base64, re, struct, sys, zlib
+href = re.search(r'href="data:image/png;base64,([^"]*)"', open(sys.argv[1]).read()).group(1)
+data = base64.b64decode(href)
+assert data[:8] == b"\x89PNG\r\n\x1a\n"
+pos, idat = 8, b""
+while pos < len(data):
+    n, kind = struct.unpack(">I4s", data[pos:pos + 8])
+    if kind == b"IHDR": w, h, depth, colour = struct.unpack(">IIBB", data[pos + 8:pos + 18])
+    if kind == b"IDAT": idat += data[pos + 8:pos + 8 + n]
+    pos += 12 + n
+assert depth == 8 and colour == 6
+raw, stride = zlib.decompress(idat), 1 + 4 * w
+assert len(raw) == h * stride
+# Undo the filters, count opaque red and opaque near-white pixels.
+prev, red, white = bytearray(4 * w), 0, 0
+for y in range(h):
+    kind, line = raw[y * stride], bytearray(raw[y * stride + 1:(y + 1) * stride])
+    for i in range(len(line)):
+        a, b = line[i - 4] if i >= 4 else 0, prev[i]
+        c = prev[i - 4] if i >= 4 else 0
+        p = a + b - c
+        pred = [0, a, b, (a + b) // 2, a if abs(p - a) <= abs(p - b) and abs(p - a) <= abs(p - c) else b if abs(p - b) <= abs(p - c) else c][kind]
+        line[i] = (line[i] + pred) & 255
+    for x in range(0, len(line), 4):
+        r, g, bl, al = line[x:x + 4]
+        if al == 255 and r - bl > 100: red += 1
+        if al == 255 and abs(r - bl) < 20 and r > 200: white += 1
+    prev = line
+sys.exit(not (red > 10000 and white > 10000))
+PY
+# A mesh above the default budget (50,000 faces): a 160 x 160 grid, 51,200 triangles.
+python3 -c "
+n = 160
+print('OFF'); print((n + 1) ** 2, 2 * n * n, 0)
+for j in range(n + 1):
+    for i in range(n + 1): print(i / n, j / n, 0.1 * (i / n) ** 2)
+for j in range(n):
+    for i in range(n):
+        a = j * (n + 1) + i
+        print(3, a, a + 1, a + n + 2); print(3, a, a + n + 2, a + n + 1)" > grid.off
+"$DLF" disk grid.off --svg grid.svg -q
+check "51,200 faces: exit 0" equals "$?" 0
+check "51,200 faces: rasterised (one image, no polygon)" equals "$(fact grid.svg images) $(fact grid.svg polygons)" "1 0"
+check "51,200 faces: the SVG under 3 MB" number_is "$(wc -c < grid.svg)" "<" 3000000
+# Bad values: one line, exit 1.
+for bad in "--svg-colour blue" "--svg-scale wide" "--svg-max-faces 0"; do
+  "$DLF" disk "$NEF" --svg bad.svg $bad > bad.out 2> bad.err
+  check "$bad: exit 1, one stderr line" equals "$? $(wc -l < bad.err)" "1 1"
+done
+"$DLF" disk "$NEF" --svg-scale fixed -o x.obj > bad.out 2> bad.err
+check "--svg-scale without --svg: refused" equals "$? $(cat bad.err)" "1 dlf: error: --svg-scale applies to --svg only"
+
 echo
 if [ "$failures" -ne 0 ]; then
   echo "$failures of $checks checks FAILED"

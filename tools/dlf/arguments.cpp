@@ -228,6 +228,31 @@ void check_mode_options(const po::variables_map& vm, const std::string& mode, co
     throw Cli_error("--fixed-step must be a number > 0");
 }
 
+void add_svg_options(po::options_description& o, Svg_options& svg)
+{
+  o.add_options()
+    ("svg-colour", po::value<std::string>(&svg.colour)->value_name("C"),
+     "what --svg colours: raw, domain / surface area in the density's unit (a face of density 1 keeps its "
+     "area: a region of --factor 4 shows 4), the default with a density or region; or prescribed, "
+     "domain / (density x surface): 1 wherever the map reached its target, the default otherwise")
+    ("svg-scale", po::value<std::string>(&svg.scale)->value_name("S")->default_value(svg.scale),
+     "fitted: a scale 1/E to E, E the run's largest ratio or inverse ratio (rounded up to 2 digits, at "
+     "least 1.1); fixed: 1/4 to 4 whatever the run")
+    ("svg-max-faces", po::value<std::size_t>(&svg.max_faces)->value_name("N")->default_value(svg.max_faces),
+     "--svg of more than N triangles draws them as one embedded PNG, 2 pixels a unit of the picture "
+     "(a polygon takes about 100 bytes: the file stays under about 5 MB)");
+}
+
+void check_svg_options(const po::variables_map& vm, bool has_svg, bool has_density, Svg_options& svg)
+{
+  for(const char* name : { "svg-colour", "svg-scale", "svg-max-faces" })
+    if(vm.count(name) && !vm[name].defaulted() && !has_svg) throw Cli_error(std::string("--") + name + " applies to --svg only");
+  if(svg.colour.empty()) svg.colour = has_density ? "raw" : "prescribed";
+  require_one_of("svg-colour", svg.colour, { "prescribed", "raw" });
+  require_one_of("svg-scale", svg.scale, { "fitted", "fixed" });
+  if(svg.max_faces < 1) throw Cli_error("--svg-max-faces must be >= 1");
+}
+
 bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s)
 {
   const SMP::Discrete_lie_flow_options defaults;
@@ -270,8 +295,10 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
     ("domain-mesh", po::value<std::string>(&s.domain_mesh)->value_name("DOMAIN.obj"),
      "write the final domain triangulation (differs from the input's in paper mode)")
     ("svg", po::value<std::string>(&s.svg)->value_name("LAYOUT.svg"),
-     "draw the uv layout, triangles coloured by area ratio, with a colour bar and the outline of the regions "
-     "of interest (or of the pieces of a piecewise-constant --density)")
+     "draw the uv layout, triangles coloured by area ratio (--svg-colour), with a colour bar and the regions "
+     "of interest shaded and outlined (or the outlines of the pieces of a piecewise-constant --density)");
+  add_svg_options(o, s.svg_options);
+  o.add_options()
     ("plot-convergence", po::value<std::string>(&s.convergence_svg)->value_name("PLOT.svg"),
      "plot d_area - 2 and the area residual per iteration (log scale)")
     ("plot-histogram", po::value<std::string>(&s.histogram_svg)->value_name("PLOT.svg"),
@@ -368,6 +395,7 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
   if(!(s.options.certified.share_tolerance >= 0) || !std::isfinite(s.options.certified.share_tolerance))
     throw Cli_error("--share-tolerance must be a number >= 0");
   if(s.has_density() && vm["tolerance"].defaulted()) tolerance = density_tolerance;
+  check_svg_options(vm, !s.svg.empty(), s.has_density(), s.svg_options);
   check_mode_options(vm, s.mode, s.options);
 
   SMP::Discrete_lie_flow_options& opt = s.options;

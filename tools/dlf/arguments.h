@@ -14,6 +14,7 @@
 #include <boost/program_options/variables_map.hpp>
 
 #include <array>
+#include <cstddef>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -33,6 +34,16 @@ struct Region_option
   std::string name() const;         ///< as the command line gave it, for messages and the report
 };
 
+/// How `--svg` colours the triangles (`--svg-colour`, `--svg-scale`, `--svg-max-faces`).
+struct Svg_options
+{
+  std::string colour;             ///< prescribed | raw; empty until resolved: raw with a density, else prescribed
+  std::string scale = "fitted";   ///< fitted (to the run's range) | fixed (1/4 to 4)
+  std::size_t max_faces = 50000;  ///< more faces than this: the triangles are drawn as one embedded PNG
+  bool raw() const { return colour == "raw"; }
+  bool fixed_scale() const { return scale == "fixed"; }
+};
+
 /// D_area − 2 at which a run with a density stops unless `--tolerance` is
 /// given (measured: with the plain run's 1e-2 a region's share misses its
 /// prescribed share by up to 13%; see doc/measure_control.md).
@@ -46,6 +57,7 @@ struct Disk_settings
   std::string output, report, domain_mesh, svg; ///< empty: not written
   std::string csv;                              ///< `--csv`: the report as one CSV row
   std::string convergence_svg, histogram_svg;   ///< `--plot-convergence`, `--plot-histogram`
+  Svg_options svg_options;
   std::string texture_obj;                      ///< `--texture`: NAME.obj, with NAME.mtl and NAME.png
   int texture_size = 1024;                      ///< `--texture-size`: pixels a side
   bool history_in_report = false;               ///< `--history`
@@ -96,6 +108,13 @@ std::vector<std::string> glue_region_balls(const std::vector<std::string>& args)
 /// The regions of `--roi` / `--roi-ball` with the k-th `--factor`, in
 /// command-line order; throws `Cli_error` on a missing or bad factor.
 std::vector<Region_option> regions_in_order(const std::vector<boost::program_options::option>& ordered);
+
+/// The options of `Svg_options`, for `dlf disk` and `dlf sphere`.
+void add_svg_options(boost::program_options::options_description& options, Svg_options& svg);
+
+/// Checks them (one of `--svg`, else refused) and resolves the colour's
+/// default: raw when the run has a density (`has_density`), else prescribed.
+void check_svg_options(const boost::program_options::variables_map& vm, bool has_svg, bool has_density, Svg_options& svg);
 
 /// True for the fixed-border initial maps (convex border: circle or square).
 /// The library's mode of a --mode value: certified, paper or literal.

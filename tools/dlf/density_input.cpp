@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iomanip>
 #include <functional>
 #include <map>
 #include <set>
@@ -173,16 +174,22 @@ Density_setup make_density(const Indexed_mesh& mesh, const Disk_settings& s)
   }
   for(face_descriptor f : faces(sm)) d.face_density.push_back(get(rho, f));
   for(Density_region& region : d.regions) {
-    double in = 0, all = 0;
+    double in = 0, all = 0, area_in = 0, area_all = 0;
     std::vector<bool> member(mesh.faces.size(), false);
     for(int f : region.faces) member[std::size_t(f)] = true;
     for(std::size_t f = 0; f < mesh.faces.size(); ++f) {
       const Triangle& t = mesh.faces[f];
-      const double a = d.face_density[f] * SMP::internal::dlf::triangle_area_3(mesh.xyz[t[0]], mesh.xyz[t[1]], mesh.xyz[t[2]]);
-      all += a;
-      if(member[f]) in += a;
+      const double area = SMP::internal::dlf::triangle_area_3(mesh.xyz[t[0]], mesh.xyz[t[1]], mesh.xyz[t[2]]);
+      all += d.face_density[f] * area;
+      area_all += area;
+      if(member[f]) {
+        in += d.face_density[f] * area;
+        area_in += area;
+      }
     }
     region.prescribed = in / all;
+    region.surface = area_in / area_all;
+    region.mean_density = in / area_in;
   }
   return d;
 }
@@ -203,6 +210,42 @@ void measure_regions(const Indexed_mesh& mesh, const std::vector<Vec2>& uv, Dens
     region.achieved = shares.first;
     region.prescribed = shares.second;
   }
+}
+
+nlohmann::ordered_json regions_json(const Density_setup& d, bool measured)
+{
+  using json = nlohmann::ordered_json;
+  json regions = json::array();
+  for(const Density_region& r : d.regions) {
+    json j;
+    j["name"] = r.name;
+    j["factor"] = r.factor;
+    j["faces"] = r.faces.size();
+    j["surface_fraction"] = r.surface;
+    j["prescribed_fraction"] = r.prescribed;
+    j["achieved_fraction"] = measured ? json(r.achieved) : json(nullptr);
+    j["relative_error"] = measured ? json(r.relative_error()) : json(nullptr);
+    j["reached"] = measured ? json(std::abs(r.relative_error()) <= region_share_tolerance) : json(nullptr);
+    j["prescribed_magnification"] = r.mean_density;
+    j["magnification"] = measured ? json(r.magnification()) : json(nullptr);
+    regions.push_back(j);
+  }
+  return regions;
+}
+
+void print_regions(std::ostream& out, const Density_setup& d, const std::string& domain, bool measured)
+{
+  const std::streamsize precision = out.precision();
+  for(const Density_region& r : d.regions) {
+    out << std::setprecision(5) << "  region " << r.name << ": factor " << r.factor << ", " << r.faces.size()
+        << " faces, " << r.surface << " of the surface; share of the " << domain << " " << r.prescribed << " prescribed";
+    if(measured)
+      out << ", " << r.achieved << " achieved (" << std::showpos << std::setprecision(2) << 100 * r.relative_error()
+          << std::noshowpos << "%); magnification " << std::setprecision(4) << r.magnification() << " (prescribed "
+          << r.mean_density << ")";
+    out << "\n";
+  }
+  out.precision(precision);
 }
 
 std::vector<std::array<int, 2> > region_outline(const Indexed_mesh& mesh, const std::vector<int>& faces)

@@ -11,9 +11,12 @@
 #include "arguments.h"
 #include "mesh_input.h"
 
+#include <nlohmann/json.hpp>
+
 #include <array>
 #include <cstddef>
 #include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -25,9 +28,18 @@ struct Density_region
   std::string name;          ///< as the command line gave it
   double factor = 1;
   std::vector<int> faces;    ///< input face indices, increasing
+  double surface = 0;        ///< Σ_region area / Σ area: its share of the surface
+  double mean_density = 1;   ///< Σ_region ρ·area / Σ_region area
   double prescribed = 0;     ///< Σ_region ρ·area / Σ ρ·area
   double achieved = 0;       ///< Σ_region domain area / Σ domain area (after measure_regions())
   double relative_error() const { return (achieved - prescribed) / prescribed; }
+  /// Its domain area over its surface area, the domain scaled to the area
+  /// Σ ρ·area (a face of density 1 that reached its target keeps its area):
+  /// what the layout's raw colours show, `mean_density` when the share is
+  /// reached (the factor, for a region that no other overlaps). Not
+  /// achieved / surface, which the renormalisation of the whole pulls
+  /// towards 1 as the region grows.
+  double magnification() const { return achieved / prescribed * mean_density; }
 };
 
 struct Density_setup
@@ -61,6 +73,16 @@ std::vector<int> read_selection(const std::string& path, const Indexed_mesh& mes
 
 /// Fills the achieved shares of `setup.regions` under the map `uv`.
 void measure_regions(const Indexed_mesh& mesh, const std::vector<Vec2>& uv, Density_setup& setup);
+
+/// Per region, the report's entry: name, factor, faces, its share of the
+/// surface (`surface_fraction`), of the domain prescribed (ρ·area) and
+/// achieved, the relative error, reached or not, and the magnification
+/// achieved and prescribed (`Density_region::magnification()`); the
+/// achieved values null unless `measured` (the flow failed).
+nlohmann::ordered_json regions_json(const Density_setup& setup, bool measured);
+
+/// The same, one line a region, for the summary; `domain` names it ("domain", "sphere").
+void print_regions(std::ostream& out, const Density_setup& setup, const std::string& domain, bool measured);
 
 /// The edges (vertex pairs) that bound the union of `faces`: those with a
 /// region face on one side only.

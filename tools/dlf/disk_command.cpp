@@ -82,24 +82,6 @@ json density_json(const Disk_settings& s, const Density_setup& d)
   return j;
 }
 
-// Per region: shares of the domain area, prescribed (ρ·area) and achieved
-// (null when the flow failed).
-json regions_json(const Density_setup& d, bool measured)
-{
-  json regions = json::array();
-  for(const Density_region& r : d.regions) {
-    json j;
-    j["name"] = r.name;
-    j["factor"] = r.factor;
-    j["faces"] = r.faces.size();
-    j["prescribed_fraction"] = r.prescribed;
-    j["achieved_fraction"] = measured ? json(r.achieved) : json(nullptr);
-    j["relative_error"] = measured ? json(r.relative_error()) : json(nullptr);
-    j["reached"] = measured ? json(std::abs(r.relative_error()) <= region_share_tolerance) : json(nullptr);
-    regions.push_back(j);
-  }
-  return regions;
-}
 
 // With --seam: the seams and the cut surface that the flow mapped.
 json seam_json(const Disk_settings& s, const Seam_cut& cut)
@@ -220,14 +202,7 @@ void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh
   }
   if(s.mode != "certified") out << "  edge flips " << R.flips << "\n";
   if(!s.density_file.empty()) out << "  density per " << density.source << " from " << s.density_file << "\n";
-  for(const Density_region& r : density.regions) {
-    out << "  region " << r.name << ": factor " << r.factor << ", " << r.faces.size() << " faces, share of the domain "
-        << std::setprecision(5) << r.prescribed << " prescribed";
-    if(final_metrics)
-      out << ", " << r.achieved << " achieved (" << std::showpos << std::setprecision(2) << 100 * r.relative_error()
-          << std::noshowpos << "%)";
-    out << "\n";
-  }
+  print_regions(out, density, "domain", final_metrics != nullptr);
   out << std::setprecision(3) << "  seconds: initial map " << R.seconds_initial << ", flow " << R.seconds_flow
       << ", total " << run.seconds << "\n";
   if(s.verbosity == Verbosity::VERBOSE)

@@ -24,16 +24,21 @@ namespace {
 std::vector<std::array<int, 2> > layout_outline(const Indexed_mesh& mesh, const Density_setup& density)
 {
   if(density.regions.empty()) return density_outline(mesh, density.face_density);
-  std::vector<int> roi;
-  for(const Density_region& r : density.regions) roi.insert(roi.end(), r.faces.begin(), r.faces.end());
-  std::sort(roi.begin(), roi.end());
-  roi.erase(std::unique(roi.begin(), roi.end()), roi.end());
-  return region_outline(mesh, roi);
+  return region_outline(mesh, region_faces(density));
 }
 
 std::string file_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
 } // namespace
+
+std::vector<int> region_faces(const Density_setup& density)
+{
+  std::vector<int> roi;
+  for(const Density_region& r : density.regions) roi.insert(roi.end(), r.faces.begin(), r.faces.end());
+  std::sort(roi.begin(), roi.end());
+  roi.erase(std::unique(roi.begin(), roi.end()), roi.end());
+  return roi;
+}
 
 std::vector<std::array<int, 2> > density_outline(const Indexed_mesh& mesh, const std::vector<double>& face_density,
                                                  std::size_t max_levels)
@@ -88,8 +93,8 @@ std::vector<std::pair<std::string, double> > write_pictures(Output_files& output
   };
   if(!s.svg.empty())
     timed(s.svg, [&](std::ostream& o) {
-      write_svg_layout(o, mesh, run.final_uv, caption, density.face_density, layout_outline(mesh, density),
-                       density.regions.empty() ? "density pieces" : "region of interest");
+      write_svg_layout(o, mesh, run.final_uv, caption, s.svg_options, density.face_density, layout_outline(mesh, density),
+                       density.regions.empty() ? "density pieces" : "region of interest", region_faces(density));
     });
   if(!s.convergence_svg.empty())
     timed(s.convergence_svg, [&](std::ostream& o) {

@@ -32,6 +32,9 @@ std::vector<std::pair<std::string, double> > write_pictures(Output_files& output
                                                            const Density_setup& density, const std::string& caption,
                                                            const Indexed_mesh* input = nullptr);
 
+/// The faces of every region of interest, increasing, each once.
+std::vector<int> region_faces(const Density_setup& density);
+
 /// The edges between faces of different density, when the density takes at
 /// most `max_levels` values (a piecewise-constant density: its pieces'
 /// outlines); empty otherwise.

@@ -9,6 +9,7 @@
 #include "cli_error.h"
 #include "commands.h"
 #include "density_input.h"
+#include "disk_pictures.h"
 #include "metrics.h"
 #include "mesh_input.h"
 #include "output_files.h"
@@ -77,7 +78,10 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
     ("csv", po::value<std::string>(&s.csv)->value_name("R.csv"),
      "the report as CSV: a header and one row, the JSON report's keys flattened (final.d_area, seconds.flow)")
     ("svg", po::value<std::string>(&s.svg)->value_name("VIEW.svg"),
-     "draw the sphere from +z and from -z (orthographic), triangles coloured by area ratio")
+     "draw the sphere from +z and from -z (orthographic), triangles coloured by area ratio (--svg-colour), "
+     "the regions of interest shaded");
+  add_svg_options(visible, s.svg_options);
+  visible.add_options()
     ("plot-convergence", po::value<std::string>(&s.convergence_svg)->value_name("PLOT.svg"),
      "plot d_area - 2 and the area residual per iteration (log scale)")
     ("plot-histogram", po::value<std::string>(&s.histogram_svg)->value_name("PLOT.svg"),
@@ -182,6 +186,7 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
     throw Cli_error("--density and --roi/--roi-ball exclude each other");
   if(vm.count("band") && s.density.regions.empty()) throw Cli_error("--band applies to --roi and --roi-ball only");
   if(!(s.density.band >= 0) || !std::isfinite(s.density.band)) throw Cli_error("--band must be a number >= 0");
+  check_svg_options(vm, !s.svg.empty(), s.density.has_density(), s.svg_options);
   s.options.record_history = s.history_in_report || !s.convergence_svg.empty();
   return true;
 }
@@ -323,16 +328,7 @@ json sphere_report(const Sphere_settings& s, const Indexed_mesh& input, const Sp
     d["share_error"] = R.final_share_error; // density_levels.h
     j["density"] = d;
   }
-  if(!density.regions.empty()) {
-    json regions = json::array();
-    for(const Density_region& r : density.regions)
-      regions.push_back({ { "name", r.name }, { "factor", r.factor }, { "faces", r.faces.size() },
-                          { "prescribed_fraction", r.prescribed },
-                          { "achieved_fraction", ok ? json(r.achieved) : json(nullptr) },
-                          { "relative_error", ok ? json(r.relative_error()) : json(nullptr) },
-                          { "reached", ok ? json(std::abs(r.relative_error()) <= region_share_tolerance) : json(nullptr) } });
-    j["regions"] = regions;
-  }
+  if(!density.regions.empty()) j["regions"] = regions_json(density, ok);
   j["initial"] = ok ? metrics_to_json(R.initial_metrics) : json(nullptr);
   j["final"] = ok ? metrics_to_json(R.final_metrics) : json(nullptr);
   j["puncture_face"] = R.puncture_face;
@@ -429,7 +425,9 @@ int sphere_command(const std::vector<std::string>& args)
   std::ostringstream caption;
   caption << "dlf sphere " << s.input << ": d_area " << std::setprecision(10) << R.final_metrics.d_area;
   if(ok && !s.svg.empty())
-    outputs.write(s.svg, [&](std::ostream& o) { write_svg_sphere(o, input, points, caption.str()); });
+    outputs.write(s.svg, [&](std::ostream& o) { 
+      write_svg_sphere(o, input, points, caption.str(), s.svg_options, density.face_density, region_faces(density));
+    });
   // The initial map is not kept by the library: the result only.
   if(ok && !s.histogram_svg.empty())
     outputs.write(s.histogram_svg, [&](std::ostream& o) {
@@ -462,9 +460,7 @@ int sphere_command(const std::vector<std::string>& args)
       std::cout << std::setprecision(3) << "  seconds: initial map " << R.seconds_initial << ", flow " << R.seconds_flow
                 << ", total " << total << "\n";
     }
-    for(const Density_region& r : density.regions)
-      std::cout << "  region " << r.name << ": factor " << r.factor << ", " << r.faces.size()
-                << " faces, share of the sphere " << r.achieved << " (prescribed " << r.prescribed << ")\n";
+    print_regions(std::cout, density, "sphere", ok);
     for(const std::string& w : outputs.committed()) std::cout << "  wrote " << w << "\n";
   }
   // A region that missed its share is not an error (the map is valid), but never silent.

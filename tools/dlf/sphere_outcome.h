@@ -29,6 +29,7 @@ struct Sphere_settings
 {
   std::string input, output, report, svg, convergence_svg, histogram_svg, domain_mesh;
   std::string csv; ///< `--csv`: the report as one CSV row
+  Svg_options svg_options;
   std::string mode = "certified";
   std::string start = "tutte";  ///< tutte | conformal | given (`--init-map`)
   std::string init_map_file;    ///< `--init-map`: the caller's start

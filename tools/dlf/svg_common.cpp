@@ -64,12 +64,31 @@ std::vector<double> log_ratios(const Indexed_mesh& mesh, const std::vector<Point
   return out;
 }
 
-const double svg_clamp_log = std::log(4.);
+// A label of the scale: 3 significant digits, "1/x" below 1.
+std::string scale_label(double ratio)
+{
+  const double x = ratio < 1 ? 1 / ratio : ratio;
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), x < 1000 ? "%.3g" : "%.0f", x);
+  return (ratio < 1 ? "1/" : "") + std::string(buffer);
+}
 const double svg_bar_width = 24;
 
 } // namespace
 
-const std::string& colour_of_log_ratio(double log_ratio)
+double colour_scale_end(const std::vector<double>& log_ratios, bool fixed)
+{
+  if(fixed) return 4;
+  double largest = 0;
+  for(double l : log_ratios)
+    if(std::isfinite(l)) largest = (std::max)(largest, std::abs(l));
+  const double end = std::exp(largest);
+  // Two significant digits, rounded up (the tolerance keeps 40.0000001 at 40).
+  const double unit = std::pow(10., std::floor(std::log10(end)) - 1);
+  return (std::max)(1.1, std::ceil(end / unit - 1e-9) * unit);
+}
+
+const std::string& colour_of_log_ratio(double log_ratio, double scale_end)
 {
   // A table of the scale in 2·512 steps (adjacent entries differ by at most
   // one unit of a channel): a lookup per face instead of formatting.
@@ -85,7 +104,7 @@ const std::string& colour_of_log_ratio(double log_ratio)
     }
     return t;
   }();
-  const double t = std::max(-1., std::min(1., log_ratio / svg_clamp_log));
+  const double t = std::max(-1., std::min(1., log_ratio / std::log(scale_end)));
   return table[std::size_t(std::lround(512 * (t + 1)))];
 }
 
@@ -107,7 +126,7 @@ std::string xml_escape(const std::string& s)
 void write_svg_header(std::ostream& out, double width, double height, const std::string& caption)
 {
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << std::ceil(width) << "\" height=\"" << std::ceil(height)
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" width=\"" << std::ceil(width) << "\" height=\"" << std::ceil(height)
       << "\" viewBox=\"0 0 " << std::ceil(width) << ' ' << std::ceil(height)
       << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
       << "<title>" << xml_escape(caption) << "</title>\n"
@@ -115,27 +134,49 @@ void write_svg_header(std::ostream& out, double width, double height, const std:
       << "<text x=\"20\" y=\"16\">" << xml_escape(caption) << "</text>\n";
 }
 
-void write_colour_bar(std::ostream& out, double x, double y, double height, bool has_bad_faces, bool weighted)
+void write_colour_bar(std::ostream& out, double x, double y, double height, bool has_bad_faces,
+                      const std::string& quantity, double scale_end)
 {
+  char scale[96];
+  std::snprintf(scale, sizeof(scale), "data-scale-min=\"%.17g\" data-scale-max=\"%.17g\"", 1 / scale_end, scale_end);
+  out << "<g id=\"colour-bar\" " << scale << ">\n";
   out << "<defs><linearGradient id=\"ratio\" x1=\"0\" y1=\"0\" x2=\"0\" y2=\"1\">"
       << "<stop offset=\"0\" stop-color=\"" << hex(red) << "\"/>"
       << "<stop offset=\"0.5\" stop-color=\"" << hex(white) << "\"/>"
       << "<stop offset=\"1\" stop-color=\"" << hex(blue) << "\"/></linearGradient></defs>\n";
   out << "<rect x=\"" << x << "\" y=\"" << y << "\" width=\"" << svg_bar_width << "\" height=\"" << height
       << "\" fill=\"url(#ratio)\" stroke=\"#444\" stroke-width=\"0.5\"/>\n";
-  const char* labels[] = { "4", "2", "1", "1/2", "1/4" };
+  // Ticks at E, √E, 1, 1/√E, 1/E: even steps of the log scale.
   for(int k = 0; k < 5; ++k) {
     const double ty = y + height * k / 4.;
     out << "<line x1=\"" << x + svg_bar_width << "\" y1=\"" << ty << "\" x2=\"" << x + svg_bar_width + 5 << "\" y2=\""
         << ty << "\" stroke=\"#444\"/>"
-        << "<text x=\"" << x + svg_bar_width + 8 << "\" y=\"" << ty + 4 << "\">" << labels[k] << "</text>\n";
+        << "<text x=\"" << x + svg_bar_width + 8 << "\" y=\"" << ty + 4 << "\">"
+        << scale_label(std::pow(scale_end, (2 - k) / 2.)) << "</text>\n";
   }
   out << "<text x=\"" << x << "\" y=\"" << y - 8 << "\">area ratio</text>\n"
-      << "<text x=\"" << x << "\" y=\"" << y + height + 18 << "\">"
-      << (weighted ? "domain / (ρ·surface)" : "domain / surface") << "</text>\n";
+      << "<text x=\"" << x << "\" y=\"" << y + height + 18 << "\">";
+  // A second line after '\n' (the legend is narrow).
+  const std::size_t cut = quantity.find('\n');
+  out << xml_escape(quantity.substr(0, cut));
+  if(cut != std::string::npos)
+    out << "<tspan x=\"" << x << "\" dy=\"14\">" << xml_escape(quantity.substr(cut + 1)) << "</tspan>";
+  out << "</text>\n";
   if(has_bad_faces)
-    out << "<rect x=\"" << x << "\" y=\"" << y + height + 30 << "\" width=\"12\" height=\"12\" fill=\"#000\"/>"
-        << "<text x=\"" << x + 18 << "\" y=\"" << y + height + 41 << "\">inverted or flat</text>\n";
+    out << "<rect x=\"" << x << "\" y=\"" << y + height + 42 << "\" width=\"12\" height=\"12\" fill=\"#000\"/>"
+        << "<text x=\"" << x + 18 << "\" y=\"" << y + height + 53 << "\">inverted or flat</text>\n";
+  out << "</g>\n";
+}
+
+void write_colour_bar(std::ostream& out, double x, double y, double height, bool has_bad_faces, bool weighted)
+{
+  write_colour_bar(out, x, y, height, has_bad_faces, ratio_quantity(false, weighted), 4);
+}
+
+std::string ratio_quantity(bool raw, bool has_density)
+{
+  if(!has_density) return "domain / surface";
+  return raw ? "domain / surface\n(ρ = 1: area kept)" : "domain / (ρ·surface)";
 }
 
 std::vector<double> face_log_area_ratios(const Indexed_mesh& mesh, const std::vector<Vec2>& domain,

@@ -16,8 +16,14 @@
 namespace dlf_cli {
 
 /// White at ratio 1, blue where the domain is too small, red where it is too
-/// large, saturated at a factor 4 either way, as "#rrggbb".
-const std::string& colour_of_log_ratio(double log_ratio);
+/// large, saturated at a factor `scale_end` (> 1) either way, as "#rrggbb".
+const std::string& colour_of_log_ratio(double log_ratio, double scale_end = 4);
+
+/// The end E of the scale 1/E to E: 4 when `fixed`; else fitted to the run,
+/// the largest ratio or inverse ratio of `log_ratios` (NaN skipped) rounded
+/// up to two significant digits, at least 1.1 (below, a converged map would
+/// show its last percent of noise saturated).
+double colour_scale_end(const std::vector<double>& log_ratios, bool fixed);
 
 std::string xml_escape(const std::string& s);
 
@@ -25,9 +31,20 @@ std::string xml_escape(const std::string& s);
 /// background and the caption as title and first line.
 void write_svg_header(std::ostream& out, double width, double height, const std::string& caption);
 
-/// The vertical colour bar of the scale at (x, y), `height` tall; with a key
-/// for the black triangles when `has_bad_faces`.
+/// The vertical colour bar of the scale 1/`scale_end` to `scale_end` at
+/// (x, y), `height` tall, captioned by `quantity` (what the ratio divides,
+/// at most two lines); the legend below it ends `colour_bar_legend` lower;
+/// with a key for the black triangles when `has_bad_faces`. Its group
+/// carries the scale as `data-scale-min` and `data-scale-max`.
+void write_colour_bar(std::ostream& out, double x, double y, double height, bool has_bad_faces,
+                      const std::string& quantity, double scale_end);
+const double colour_bar_legend = 60;
+/// The fixed 1/4 to 4 bar, of domain / surface or, `weighted`, domain / (ρ·surface).
 void write_colour_bar(std::ostream& out, double x, double y, double height, bool has_bad_faces, bool weighted);
+
+/// The bar's caption of the ratio a picture colours: raw (domain / surface)
+/// or not (domain / (ρ·surface)), with a density or not.
+std::string ratio_quantity(bool raw, bool has_density);
 
 /// Per face: log(area_Ω / (ρ area_M)) after the uniform scaling of the
 /// metrics (the domain's total area made equal to Σ ρ area_M); NaN for a face

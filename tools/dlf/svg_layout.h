@@ -2,14 +2,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The uv layout as an SVG picture: each triangle filled by its log area
-// ratio (domain / surface, after the uniform scaling of the metrics; with a
-// density, domain / (density × surface)) on a diverging blue–white–red scale
-// clamped at ±log 4, with a colour bar; the outlines of regions of interest
-// drawn on top.
+// ratio on a diverging blue–white–red scale (fitted to the run, or fixed at
+// 1/4 to 4), with a colour bar; the regions of interest shaded and outlined
+// on top. The ratio is domain / surface, the domain scaled to the area
+// Σ ρ·surface: "raw", it is ρ wherever the map reached its target (a face of
+// density 1 keeps its area); "prescribed", it is divided by ρ (1 there).
 
 #ifndef DLF_CLI_SVG_LAYOUT_H
 #define DLF_CLI_SVG_LAYOUT_H
 
+#include "arguments.h"
 #include "mesh_input.h"
 
 #include <array>
@@ -21,12 +23,13 @@ namespace dlf_cli {
 
 /// `face_density`: per face, empty for ρ ≡ 1. `outline`: edges (vertex
 /// pairs) drawn as dark lines over the triangles, named in the legend by
-/// `outline_label`.
+/// `outline_label`; `shaded`: faces (increasing) shaded under it.
 void write_svg_layout(std::ostream& out, const Indexed_mesh& mesh, const std::vector<Vec2>& uv,
-                      const std::string& caption,
+                      const std::string& caption, const Svg_options& style,
                       const std::vector<double>& face_density = std::vector<double>(),
                       const std::vector<std::array<int, 2> >& outline = std::vector<std::array<int, 2> >(),
-                      const std::string& outline_label = "region of interest");
+                      const std::string& outline_label = "region of interest",
+                      const std::vector<int>& shaded = std::vector<int>());
 
 } // namespace dlf_cli
 
