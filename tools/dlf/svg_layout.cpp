@@ -22,8 +22,6 @@ namespace {
 namespace D = CGAL::Surface_mesh_parameterization::internal::dlf;
 
 const double layout_size = 760, margin = 20, legend_width = 150;
-// Pixels a unit of the rasterised faces: 1520 a side, sharp when zoomed in twice.
-const double raster_pixels = 2;
 
 } // namespace
 
@@ -79,7 +77,7 @@ void write_svg_layout(std::ostream& out, const Indexed_mesh& mesh, const std::ve
   // too exceed it.
   const bool raster = F > style.max_faces;
   std::unique_ptr<Triangle_raster> canvas;
-  if(raster) canvas.reset(new Triangle_raster(margin - 1, margin - 1, (x1 - x0) * s + 2, (y1 - y0) * s + 2, raster_pixels));
+  if(raster) canvas.reset(new Triangle_raster(margin - 1, margin - 1, (x1 - x0) * s + 2, (y1 - y0) * s + 2, svg_raster_pixels));
   const double shade = 0.15; // the opacity of the regions' shade (as written below)
   std::vector<std::size_t> bad_faces;
   {

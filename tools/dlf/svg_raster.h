@@ -16,6 +16,10 @@
 
 namespace dlf_cli {
 
+/// Pixels a unit of the pictures' rasterised faces: 1520 a side of the layout,
+/// 1200 a sphere's disc; sharp when zoomed in twice.
+constexpr double svg_raster_pixels = 2;
+
 class Triangle_raster
 {
 public:

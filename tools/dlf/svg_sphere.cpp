@@ -16,8 +16,6 @@ namespace {
 
 const double disc_radius = 300, disc_margin = 20, disc_top = 44, disc_legend_width = 150;
 const std::string fold_colour = "#000000";
-// Pixels a unit of the rasterised faces: 1200 a disc's width.
-const double raster_pixels = 2;
 
 } // namespace
 
@@ -62,7 +60,7 @@ void write_svg_sphere(std::ostream& out, const Indexed_mesh& mesh, const std::ve
     // Beyond the face budget, the faces are rasterised (svg_raster.h).
     const bool raster = mesh.faces.size() > style.max_faces;
     std::unique_ptr<Triangle_raster> canvas;
-    if(raster) canvas.reset(new Triangle_raster(0, cy - disc_radius - 1, 4 * disc_margin + 4 * disc_radius, 2 * disc_radius + 2, raster_pixels));
+    if(raster) canvas.reset(new Triangle_raster(0, cy - disc_radius - 1, 4 * disc_margin + 4 * disc_radius, 2 * disc_radius + 2, svg_raster_pixels));
     // The shaded faces in a group of their own (id "region-faces").
     text << "<g stroke-linejoin=\"round\" stroke-width=\"0.3\">\n";
     for(int pass = 0; pass < (shaded.empty() ? 1 : 2); ++pass) {
