@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer target fuzz/dlf_fuzz.cpp (clang, ASan + UBSan) into
-# build-fuzz/ and runs it for SECONDS on one core at the lowest priority,
+# build-fuzz/ and runs it for SECONDS on one core at the lowest priority
+# (FUZZ_NICE: the nice level, 19 by default),
 # starting from fuzz/seeds/ and the corpus kept in build-fuzz/corpus/.
 # Crashes, timeouts and leaks land in build-fuzz/artifacts/; replay one with
 #   build-fuzz/dlf_fuzz build-fuzz/artifacts/crash-...
@@ -37,7 +38,7 @@ for src in "${sources[@]}"; do
   # Rebuild when the source or any project header is newer than the object.
   if [[ ! -f "$obj" || -n "$(find "$src" include tools/dlf -newer "$obj" \( -name '*.h' -o -path "$src" \) | head -1)" ]]; then
     echo "fuzz: compiling $src"
-    nice -n 19 "$CXX" "${flags[@]}" -c "$src" -o "$obj"
+    nice -n "${FUZZ_NICE:-19}" "$CXX" "${flags[@]}" -c "$src" -o "$obj"
   fi
 done
 if [[ ! -x "$BUILD_DIR/dlf_fuzz" || -n "$(find "${objects[@]}" -newer "$BUILD_DIR/dlf_fuzz" | head -1)" ]]; then
@@ -55,7 +56,7 @@ if [[ -n "${FUZZ_RUNS:-}" ]]; then
   # (CI runs this; a finding stops the run and is written to artifacts/).
   rm -rf "$BUILD_DIR/fixed-corpus"
   mkdir -p "$BUILD_DIR/fixed-corpus"
-  nice -n 19 "$BUILD_DIR/dlf_fuzz" -seed="${FUZZ_SEED:-1}" -runs="$FUZZ_RUNS" -timeout=20 -rss_limit_mb=2048 \
+  nice -n "${FUZZ_NICE:-19}" "$BUILD_DIR/dlf_fuzz" -seed="${FUZZ_SEED:-1}" -runs="$FUZZ_RUNS" -timeout=20 -rss_limit_mb=2048 \
     -max_len=8192 -dict=fuzz/mesh.dict -artifact_prefix="$BUILD_DIR/artifacts/" -print_final_stats=1 \
     "$BUILD_DIR/fixed-corpus" fuzz/seeds 2>&1 | tee "$BUILD_DIR/last_run.log" | grep -E '^#[0-9]+.*(pulse|DONE)|ERROR|SUMMARY|Test unit written|Done [0-9]+ runs'
   status=${PIPESTATUS[0]}
@@ -67,7 +68,7 @@ fi
 # replaced and its input kept in artifacts/, so one run reports every
 # finding) for SECONDS, from the kept corpus; the machines this runs on are
 # shared.
-nice -n 19 "$BUILD_DIR/dlf_fuzz" -max_total_time="$SECONDS_TO_RUN" -timeout=20 -rss_limit_mb=2048 \
+nice -n "${FUZZ_NICE:-19}" "$BUILD_DIR/dlf_fuzz" -max_total_time="$SECONDS_TO_RUN" -timeout=20 -rss_limit_mb=2048 \
   -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
   -max_len=8192 -dict=fuzz/mesh.dict -artifact_prefix="$BUILD_DIR/artifacts/" -print_final_stats=1 \
   "$BUILD_DIR/corpus" fuzz/seeds 2>&1 | tee "$BUILD_DIR/last_run.log" | grep -E '^#[0-9]+: |crash|ERROR|SUMMARY|Test unit written|INFO: exiting'

@@ -161,6 +161,12 @@ awk '/^v / && ++n == 1 { first = $0; next } /^v / && n == 2 { print; print first
 check "dlf --help" bash -c "'$DLF' --help | grep -q 'dlf disk'"
 check "dlf disk --help has examples" bash -c "'$DLF' disk --help | grep -q 'Examples'"
 check "dlf score --help" bash -c "'$DLF' score --help | grep -q 'Usage: dlf score'"
+for cmd in disk sphere volume atlas score info tetrahedralize; do
+  # Defaults as written in the docs (0.005, not 0.0050000000000000001), and a
+  # name for every value (OUT.obj, not boost's bare 'arg').
+  check "dlf $cmd --help: no 17-digit default, no bare 'arg'" \
+    bash -c "! '$DLF' $cmd --help 2>&1 | grep -E '[0-9]\.[0-9]{9,}|\] arg\b'"
+done
 
 # --- success: certified, all outputs -------------------------------------------
 "$DLF" disk "$NEF" -o nef.obj --report nef.json --svg nef.svg --domain-mesh nef_domain.obj --history > nef.out 2> nef.err

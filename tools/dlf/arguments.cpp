@@ -3,6 +3,7 @@
 
 #include "arguments.h"
 #include "cli_error.h"
+#include "cli_util.h"
 
 #include <boost/program_options.hpp>
 
@@ -336,7 +337,7 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
      "belongs to the k-th --roi or --roi-ball, and overlapping regions multiply")
     ("band", po::value<double>(&s.band)->value_name("W"),
      "width (3D length, along edges) of a transition from each region's factor to 1 around it")
-    ("share-tolerance", po::value<double>(&s.options.certified.share_tolerance)->value_name("X")->default_value(s.options.certified.share_tolerance),
+    ("share-tolerance", po::value<double>(&s.options.certified.share_tolerance)->value_name("X")->default_value(s.options.certified.share_tolerance, shortest_text(s.options.certified.share_tolerance)),
      "with a density, certified mode: converged also needs every region of the density (every set of faces below or above "
      "a density value) within X of its prescribed share of the domain area, relative (0: d_area alone decides)")
     ("coarse-to-fine-faces", po::value<std::size_t>(&s.options.disk.coarse_to_fine_faces)->value_name("N")

@@ -7,6 +7,8 @@
 #define DLF_CLI_UTIL_H
 
 #include <cstddef>
+#include <cstdio>
+#include <cstdlib>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -15,6 +17,18 @@ namespace dlf_cli {
 
 /// A path as messages quote it.
 inline std::string quoted(const std::string& path) { return "'" + path + "'"; }
+
+/// The shortest decimal text that reads back as `x` (0.005, where a
+/// 17-digit default prints 0.0050000000000000001): for `--help`'s defaults.
+inline std::string shortest_text(double x)
+{
+  char text[32];
+  for(int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, x);
+    if(std::strtod(text, nullptr) == x) break;
+  }
+  return text;
+}
 
 /// A union-find over indices, for connected components and fans.
 struct Union_find

@@ -73,7 +73,7 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
   po::options_description visible("Options");
   visible.add_options()
     ("help,h", "this help")
-    ("output,o", po::value<std::string>(&s.output), "OBJ with the sphere points")
+    ("output,o", po::value<std::string>(&s.output)->value_name("OUT.obj"), "OBJ with the sphere points")
     ("report", po::value<std::string>(&s.report)->value_name("R.json"), "JSON report")
     ("csv", po::value<std::string>(&s.csv)->value_name("R.csv"),
      "the report as CSV: a header and one row, the JSON report's keys flattened (final.d_area, seconds.flow)")

@@ -86,7 +86,7 @@ int tetrahedralize_command(const std::vector<std::string>& args)
   po::options_description visible("Options");
   visible.add_options()
     ("help,h", "this help")
-    ("output,o", po::value<std::string>(&output), "the Medit .mesh to write")
+    ("output,o", po::value<std::string>(&output)->value_name("OUT.mesh"), "the Medit .mesh to write")
     ("tets", po::value<std::size_t>(&target_tets)->value_name("N"),
      "the tetrahedra's size bound derived from N and the solid's volume (default 10000; Mesh_3 makes about N tetrahedra on CGAL's meshes)")
     ("size", po::value<double>(&size)->value_name("S"),
