@@ -11,6 +11,7 @@
 // the keyword (tolerance, not --tolerance). Wrong types raise TypeError,
 // wrong shapes and values ValueError.
 
+#include "commands.h"
 #include "cli_error.h"
 #include "disk_outcome.h"
 #include "mesh_info.h"
@@ -604,38 +605,9 @@ typedef CGAL::Surface_mesh<Atlas_kernel::Point_3> Atlas_mesh;
 nlohmann::ordered_json atlas_report(const SMP::Discrete_lie_flow_atlas_report& r, std::size_t faces,
                                     const std::string& name)
 {
-  nlohmann::ordered_json j;
-  j["status"] = r.converged() ? "ok" : "not_converged";
-  j["input"] = name;
-  j["faces"] = faces;
-  j["components"] = r.components;
-  j["isolated_vertices"] = r.isolated_vertices;
-  j["closed_components"] = r.closed_components;
-  j["max_genus"] = r.max_genus;
-  j["charts"] = r.charts;
-  j["splits"] = r.splits;
-  j["unconverged_charts"] = r.unconverged_charts;
-  j["converged"] = r.converged();
-  j["valid"] = r.valid();
-  j["seam_length"] = r.seam_length;
-  j["surface_area"] = r.surface_area;
-  j["packing_efficiency"] = r.packing_efficiency;
-  j["max_chart_stretch"] = r.max_chart_stretch;
-  j["d_area"] = r.metrics.d_area;
-  j["log_area_max_abs"] = r.metrics.log_area_max_abs;
-  j["inverted_faces"] = r.inverted_faces;
-  j["degenerate_faces"] = r.degenerate_faces;
-  j["overlapping_chart_pairs"] = r.overlapping_chart_pairs;
-  j["points_outside"] = r.points_outside;
-  j["three_border_corner_faces"] = r.three_border_corner_faces;
-  j["seconds"] = r.seconds;
-  nlohmann::ordered_json charts = nlohmann::ordered_json::array();
-  for(const auto& c : r.chart_reports)
-    charts.push_back({ { "faces", c.faces }, { "holes", c.holes }, { "split_depth", c.split_depth },
-                       { "area_share", c.area_share }, { "iterations", c.iterations }, { "d_area", c.d_area },
-                       { "stop_reason", SMP::discrete_lie_flow_stop_reason_name(c.stop_reason) },
-                       { "three_border_corner_faces", c.three_border_corner_faces } });
-  j["chart_list"] = charts;
+  nlohmann::ordered_json j = { { "input", name }, { "faces", faces } };
+  const nlohmann::ordered_json atlas = dlf_cli::atlas_report_json(r);
+  for(const auto& item : atlas.items()) j[item.key()] = item.value();
   return j;
 }
 

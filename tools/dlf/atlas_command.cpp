@@ -215,6 +215,42 @@ std::string shortest(double x)
 
 } // namespace
 
+nlohmann::ordered_json atlas_report_json(const SMP::Discrete_lie_flow_atlas_report& r)
+{
+  nlohmann::ordered_json j;
+  j["status"] = r.converged() ? "ok" : "not_converged";
+  j["components"] = r.components;
+  j["isolated_vertices"] = r.isolated_vertices;
+  j["closed_components"] = r.closed_components;
+  j["max_genus"] = r.max_genus;
+  j["charts"] = r.charts;
+  j["splits"] = r.splits;
+  j["peeled_faces"] = r.peeled_faces;
+  j["unconverged_charts"] = r.unconverged_charts;
+  j["converged"] = r.converged();
+  j["valid"] = r.valid();
+  j["seam_length"] = r.seam_length;
+  j["surface_area"] = r.surface_area;
+  j["packing_efficiency"] = r.packing_efficiency;
+  j["max_chart_stretch"] = r.max_chart_stretch;
+  j["d_area"] = r.metrics.d_area;
+  j["log_area_max_abs"] = r.metrics.log_area_max_abs;
+  j["inverted_faces"] = r.inverted_faces;
+  j["degenerate_faces"] = r.degenerate_faces;
+  j["overlapping_chart_pairs"] = r.overlapping_chart_pairs;
+  j["points_outside"] = r.points_outside;
+  j["three_border_corner_faces"] = r.three_border_corner_faces;
+  j["seconds"] = r.seconds;
+  nlohmann::ordered_json charts = nlohmann::ordered_json::array();
+  for(const auto& c : r.chart_reports)
+    charts.push_back({ { "faces", c.faces }, { "holes", c.holes }, { "split_depth", c.split_depth },
+                       { "area_share", c.area_share }, { "iterations", c.iterations }, { "d_area", c.d_area },
+                       { "stop_reason", SMP::discrete_lie_flow_stop_reason_name(c.stop_reason) },
+                       { "three_border_corner_faces", c.three_border_corner_faces } });
+  j["chart_list"] = charts;
+  return j;
+}
+
 int atlas_command(const std::vector<std::string>& args)
 {
   Atlas_args a = parse(args);
@@ -301,33 +337,8 @@ int atlas_command(const std::vector<std::string>& args)
                      { "nonmanifold_vertices_added", rep.nonmanifold_vertices_added },
                      { "degenerate_faces_dropped", rep.degenerate_faces_dropped },
                      { "isolated_vertices", rep.isolated_vertices } };
-    j["components"] = r.components;
-    j["closed_components"] = r.closed_components;
-    j["max_genus"] = r.max_genus;
-    j["charts"] = r.charts;
-    j["splits"] = r.splits;
-    j["peeled_faces"] = r.peeled_faces;
-    j["unconverged_charts"] = r.unconverged_charts;
-    j["converged"] = r.converged();
-    j["valid"] = r.valid();
-    j["seam_length"] = r.seam_length;
-    j["surface_area"] = r.surface_area;
-    j["packing_efficiency"] = r.packing_efficiency;
-    j["max_chart_stretch"] = r.max_chart_stretch;
-    j["d_area"] = r.metrics.d_area;
-    j["log_area_max_abs"] = r.metrics.log_area_max_abs;
-    j["inverted_faces"] = r.inverted_faces;
-    j["degenerate_faces"] = r.degenerate_faces;
-    j["overlapping_chart_pairs"] = r.overlapping_chart_pairs;
-    j["three_border_corner_faces"] = r.three_border_corner_faces;
-    j["seconds"] = r.seconds;
-    nlohmann::json charts = nlohmann::json::array();
-    for(const auto& c : r.chart_reports)
-      charts.push_back({ { "faces", c.faces }, { "holes", c.holes }, { "split_depth", c.split_depth },
-                         { "area_share", c.area_share }, { "iterations", c.iterations }, { "d_area", c.d_area },
-                         { "stop_reason", SMP::discrete_lie_flow_stop_reason_name(c.stop_reason) },
-                         { "three_border_corner_faces", c.three_border_corner_faces } });
-    j["chart_list"] = charts;
+    const nlohmann::ordered_json atlas = atlas_report_json(r);
+    for(const auto& item : atlas.items()) j[item.key()] = item.value();
     if(!a.report.empty()) {
       std::ofstream out(a.report);
       if(!(out << j.dump(2) << "\n")) throw Cli_error("atlas: cannot write " + a.report);

@@ -7,6 +7,10 @@
 #ifndef DLF_CLI_COMMANDS_H
 #define DLF_CLI_COMMANDS_H
 
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_atlas_options.h>
+
+#include <nlohmann/json.hpp>
+
 #include <string>
 #include <vector>
 
@@ -14,6 +18,9 @@ namespace dlf_cli {
 
 int disk_command(const std::vector<std::string>& args);
 int atlas_command(const std::vector<std::string>& args);
+/// The atlas report's keys of `dlf atlas --report` (status, charts, seams,
+/// packing, checks, seconds, chart_list); the Python module's too.
+nlohmann::ordered_json atlas_report_json(const CGAL::Surface_mesh_parameterization::Discrete_lie_flow_atlas_report& r);
 int score_command(const std::vector<std::string>& args);
 int sphere_command(const std::vector<std::string>& args);
 int info_command(const std::vector<std::string>& args);
