@@ -266,11 +266,21 @@ double number_arg(const py::object& x, const char* name)
   return py::float_(x).cast<double>();
 }
 
+// A word option given as an object (None allowed by the caller).
+std::string string_arg(const py::object& x, const char* name)
+{
+  if(!PyUnicode_Check(x.ptr())) type_error(std::string(name) + " must be a string, got " + type_name(x));
+  return x.cast<std::string>();
+}
+
 long long integer_arg(const py::object& x, const char* name)
 {
   if(PyBool_Check(x.ptr()) || !PyIndex_Check(x.ptr()))
     throw py::type_error(std::string(name) + " must be an integer, got " + std::string(py::str(py::type::of(x).attr("__name__"))));
-  return py::int_(x).cast<long long>();
+  int overflow = 0;
+  const long long n = PyLong_AsLongLongAndOverflow(py::int_(x).ptr(), &overflow);
+  if(overflow != 0) value_error(std::string(name) + " is out of range: " + std::string(py::str(x)));
+  return n;
 }
 
 // The options common to both flows, as the tool's arguments.
@@ -301,7 +311,11 @@ void add_flow_arguments(std::vector<std::string>& args, const std::string& mode,
 class Python_callback
 {
 public:
-  explicit Python_callback(py::object f) : m_f(std::move(f)) {}
+  explicit Python_callback(py::object f) : m_f(std::move(f))
+  {
+    if(!m_f.is_none() && !PyCallable_Check(m_f.ptr()))
+      type_error("callback must be callable (or None), got " + type_name(m_f));
+  }
   ~Python_callback()
   {
     if(m_type) {
@@ -433,7 +447,7 @@ py::tuple disk(const py::object& V, const py::object& F, const std::string& mode
   if(!init_uv.is_none()) {
     if(!seam.is_none()) value_error("init_uv applies to meshes without seam");
     if(init != "tutte") value_error("init_uv and init exclude each other");
-    if(!border.is_none() && border.cast<std::string>() != "free")
+    if(!border.is_none() && string_arg(border, "border") != "free")
       value_error("init_uv keeps the map's own border: border=\"free\" only");
     const std::vector<double> flat = real_matrix(init_uv, "init_uv", 2, py::ssize_t(input.xyz.size()));
     for(std::size_t i = 0; i < flat.size() / 2; ++i) {
@@ -445,7 +459,7 @@ py::tuple disk(const py::object& V, const py::object& F, const std::string& mode
   std::vector<std::string> args{ word_arg(name, "name"), "--init", word_arg(init, "init"), "--outer-loop",
                                  std::to_string(outer_loop) };
   if(!start_uv.empty()) args.insert(args.end(), { "--border", "free" });
-  else if(!border.is_none()) args.insert(args.end(), { "--border", word_arg(border.cast<std::string>(), "border") });
+  else if(!border.is_none()) args.insert(args.end(), { "--border", word_arg(string_arg(border, "border"), "border") });
   add_flow_arguments(args, mode, tolerance, max_iterations, mu, share_tolerance, fixed_step, threshold, literal_targets,
                      delaunay_flips, history);
   dlf_cli::Disk_settings s;
