@@ -188,6 +188,7 @@ std::string number(double x)
 // A word option (mode, init, border, name), which must not read as an option of the tool.
 const std::string& word_arg(const std::string& value, const char* name)
 {
+  if(value.find('\0') != std::string::npos) value_error(std::string(name) + " must not contain a NUL character");
   if(value.empty() || value[0] == '-') value_error(std::string("invalid value '") + value + "' for " + name);
   return value;
 }
@@ -430,6 +431,7 @@ py::tuple disk(const py::object& V, const py::object& F, const std::string& mode
                int outer_loop, bool literal_targets, bool delaunay_flips, bool history, const py::object& callback,
                const std::string& name)
 {
+  word_arg(name, "name"); // first: the messages below quote it
   const Indexed_mesh input = [&] {
     try {
       return mesh_of(V, F);
@@ -499,6 +501,7 @@ py::tuple sphere(const py::object& V, const py::object& F, const std::string& mo
                  const std::string& start, const py::object& init_map, const py::object& callback,
                  const std::string& name)
 {
+  word_arg(name, "name"); // first: the messages below quote it
   const Indexed_mesh input = [&] {
     try {
       return mesh_of(V, F);
@@ -588,6 +591,7 @@ py::object info(const py::object& V, const py::object& F, const std::string& nam
 {
   // Unlike the flows, info() describes what it is given: non-finite
   // coordinates, unreferenced vertices, non-manifold faces are counted.
+  word_arg(name, "name");
   const std::vector<Vec3> xyz = points_of(real_matrix(V, "V", 3));
   const std::vector<std::vector<std::size_t> > faces = index_triangles(F, xyz.size());
   if(faces.empty()) value_error("F: the mesh has no faces");
@@ -630,6 +634,7 @@ py::tuple atlas(const py::object& V, const py::object& F, const std::string& bor
 {
   // Any triangle mesh the halfedge structure holds: several components,
   // any genus, isolated vertices (ignored); not repaired (the tool repairs files).
+  word_arg(name, "name");
   const std::vector<Vec3> xyz = points_of(real_matrix(V, "V", 3));
   const std::vector<std::vector<std::size_t> > faces = index_triangles(F, xyz.size());
   if(faces.empty()) value_error("F: the mesh has no faces");

@@ -536,6 +536,10 @@ expect_error() { # expect_error DESCRIPTION EXPECTED_CODE MESSAGE_PATTERN ARGS..
 expect_error "missing file" 1 "cannot open" disk no_such_mesh.off
 expect_error "garbage OFF" 1 "cannot read" disk garbage.off
 expect_error "garbage OBJ" 1 "cannot read" disk garbage.obj
+# A PLY header with a property before any element (CGAL's reader would index an empty list).
+printf 'ply\nformat ascii 1.0\nproperty float x\nelement vertex 3\nend_header\n0\n1\n2\n' > property_first.ply
+expect_error "PLY property before any element" 1 "property_first.ply', line 3: a PLY 'property' before any 'element'" \
+  disk property_first.ply
 expect_error "closed mesh (not a disk): the reason first, dlf sphere named" 1 \
   "not a disk: a closed surface (no border loop) of genus 0 (Euler characteristic 2); dlf disk needs a border: 'dlf sphere' maps it" \
   disk "$MESHES/sphere.off"

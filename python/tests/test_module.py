@@ -352,6 +352,16 @@ def test_unsuitable_meshes_and_options_raise_value_error(nefertiti):
         dlf.disk(V, F, max_iterations=2.5)
     with pytest.raises(TypeError):
         dlf.disk(V, F, mode=3)
+    # Found by test_properties.py: each once raised RuntimeError or an empty message.
+    with pytest.raises(TypeError, match="border must be a string, got float"):
+        dlf.disk(V, F, border=-0.5)
+    with pytest.raises(ValueError, match="max_iterations is out of range: 10{30}"):
+        dlf.sphere(V, F, max_iterations=10 ** 30)
+    with pytest.raises(TypeError, match="callback must be callable"):
+        dlf.disk(V, F, callback=0)
+    for f in (dlf.disk, dlf.sphere, dlf.atlas, dlf.info):
+        with pytest.raises(ValueError, match="name must not contain a NUL character"):
+            f(V, F, name="a\x00b")
     with pytest.raises(TypeError, match="density must hold real numbers, got dtype <U"):
         dlf.disk(V, F, density=["high"] * len(F))
     with pytest.raises(TypeError, match="density must be an array, not str"):

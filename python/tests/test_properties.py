@@ -141,14 +141,14 @@ def keyword_value(rng, key, V, F):
     return float(rng.choice([-1.0, 0.0, 1e-12, 1e-3, 0.3, 0.9, 1.0, 2.0, 50.0]))
 
 
-def check_result(fn, result, V):
+def check_result(fn, result, V, F, kwargs):
     if fn in (dlf.info, dlf.score):
         assert isinstance(result, dict)
         return
     out, report = result
     assert isinstance(report, dict) and isinstance(out, np.ndarray)
-    if fn is dlf.atlas:
-        assert out.ndim == 3 and out.shape[1:] == (3, 2)   # per corner
+    if fn is dlf.atlas or (fn is dlf.disk and kwargs.get("seam") is not None):
+        assert out.shape == (len(F), 3, 2)   # per corner
     else:
         assert out.shape == (len(V), 2 if fn is dlf.disk else 3)
     assert np.isfinite(out).all()
@@ -177,24 +177,27 @@ def test_malformed_calls_raise_only_value_or_type_error(fn):
                 warnings.simplefilter("ignore")
                 result = fn(*args, **kwargs)
         except (ValueError, TypeError) as e:
-            assert str(e), "call %d: %s with an empty message" % (call, type(e).__name__)
+            assert str(e), "%s: %s with an empty message" % (what(call, fn, args, kwargs), type(e).__name__)
             outcomes["ValueError" if isinstance(e, ValueError) else "TypeError"] += 1
             continue
         except dlf.FlowError as e:
-            assert str(e) and (e.report is None or isinstance(e.report, dict)), "call %d: FlowError without a message" % call
+            assert str(e) and (e.report is None or isinstance(e.report, dict)), \
+                "%s: FlowError without a message" % what(call, fn, args, kwargs)
             outcomes["FlowError"] += 1
             continue
         except Exception as e:  # noqa: BLE001 - the property under test
-            pytest.fail("call %d: %s(%s, keywords %s) raised %s: %s" %
-                        (call, fn.__name__, ", ".join(describe(a) for a in args),
-                         {k: describe(v) for k, v in kwargs.items()},
-                         type(e).__name__, e))
-        check_result(fn, result, V0)
+            pytest.fail("%s raised %s: %s" % (what(call, fn, args, kwargs), type(e).__name__, e))
+        check_result(fn, result, V, F, kwargs)
         outcomes["returned"] += 1
     # The draw reaches every outcome, so that a regression that turns every
     # call into an error (or none) is seen too.
     print(fn.__name__, outcomes)
     assert outcomes["returned"] > 0 and outcomes["ValueError"] > 0 and outcomes["TypeError"] > 0, outcomes
+
+
+def what(call, fn, args, kwargs):
+    return "call %d: %s(%s, keywords %s)" % (call, fn.__name__, ", ".join(describe(a) for a in args),
+                                             {k: describe(v) for k, v in kwargs.items()})
 
 
 def describe(a):

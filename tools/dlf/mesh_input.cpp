@@ -76,6 +76,34 @@ bool has_off_extension(const std::string& path)
   return ext == ".off";
 }
 
+bool has_ply_extension(const std::string& path)
+{
+  if(path.size() < 4) return false;
+  std::string ext = path.substr(path.size() - 4);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext == ".ply";
+}
+
+// CGAL 5.5's PLY reader takes the last element of an empty list when a
+// header declares a property before any element (undefined behaviour, a
+// finding of fuzz/dlf_fuzz.cpp): such a header is refused here first.
+void check_ply_header(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  bool element = false;
+  for(std::size_t number = 1; std::getline(in, line); ++number) {
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if(keyword == "end_header") return;
+    if(keyword == "element") element = true;
+    if(keyword == "property" && !element)
+      throw Cli_error(quoted(path) + ", line " + std::to_string(number) +
+                      ": a PLY 'property' before any 'element' (not a valid PLY header)");
+  }
+}
+
 // OFF files are read here rather than by CGAL's reader, which a small
 // malformed file makes misbehave (findings of fuzz/dlf_fuzz.cpp, CGAL 5.5):
 //  - it resizes its arrays to the header's counts, and a face to the count
@@ -357,6 +385,7 @@ Indexed_mesh read_triangle_mesh(const std::string& path)
   if(!std::ifstream(path))
     throw Cli_error(quoted(path) + ": cannot open (no such file, or not readable)");
 
+  if(has_ply_extension(path)) check_ply_header(path);
   std::vector<Soup_point> points;
   std::vector<Polygon> polygons;
   // The soup reader, not PMP::IO::read_polygon_mesh(): the latter's repair
