@@ -13,8 +13,12 @@
 
 #include "cli_error.h"
 #include "commands.h"
+#include "mesh_input.h"
+#include "obj_io.h"
 #include "output_files.h"
+#include "progress.h"
 #include "svg_common.h"
+#include "texture_output.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
@@ -28,14 +32,14 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <map>
 #include <sstream>
 #include <string>
-#include <tuple>
 #include <vector>
 
 namespace dlf_cli {
@@ -57,18 +61,23 @@ const char* atlas_help =
   "  --report R.json        the report (charts, seam length, packing, D_area, repairs, checks)\n"
   "  --csv R.csv            the report as CSV: a header and one row, its keys flattened\n"
   "  --svg A.svg            the packed atlas, each triangle coloured by its uv area over its share\n"
+  "  --texture NAME.obj     the mesh textured by a checkerboard (NAME.obj, .mtl, .png): the atlas\n"
+  "                         preserves area, so every square covers the same area of the surface\n"
+  "  --texture-size N       the checkerboard's pixels a side (default 1024)\n"
   "  --border square|circle the charts' border (default square: fills its cell)\n"
   "  --tips K               tips a closed component's seam runs through (default 2)\n"
   "  --gutter G             space around each chart, uv units (default 1/1024)\n"
   "  --no-stretch           keep the charts' shapes (shelf packing) instead of\n"
   "                         filling treemap cells by area-preserving stretches\n"
-  "  --quiet                no progress lines\n"
+  "  -q, --quiet            no progress lines, no summary\n"
   "Exit: 0 valid atlas, every chart converged; 3 valid atlas, a chart stopped short;\n"
   "      1 bad input (nothing written); 2 no atlas.\n";
 
 struct Atlas_args
 {
-  std::string input, output, report, csv, svg;
+  std::string input, output, report, csv, svg, texture;
+  int texture_size = 1024;
+  bool texture_size_given = false;
   SMP::Discrete_lie_flow_atlas_options options;
   bool quiet = false;
 };
@@ -95,6 +104,16 @@ Atlas_args parse(const std::vector<std::string>& args)
     else if(s == "--report") a.report = value(i);
     else if(s == "--csv") a.csv = value(i);
     else if(s == "--svg") a.svg = value(i);
+    else if(s == "--texture") {
+      a.texture = value(i);
+      texture_paths(a.texture); // a name that is not NAME.obj fails now, not after the flow
+    }
+    else if(s == "--texture-size") {
+      const double n = number(i);
+      if(!(n >= 16 && n <= 16384 && n == std::floor(n))) throw Cli_error("atlas: --texture-size is a whole number from 16 to 16384");
+      a.texture_size = int(n);
+      a.texture_size_given = true;
+    }
     else if(s == "--border") {
       const std::string& b = value(i);
       if(b != "square" && b != "circle") throw Cli_error("atlas: --border is square or circle, not '" + b + "'");
@@ -111,13 +130,14 @@ Atlas_args parse(const std::vector<std::string>& args)
       a.options.gutter = g;
     }
     else if(s == "--no-stretch") a.options.stretch_to_fill = false;
-    else if(s == "--quiet") a.quiet = true;
+    else if(s == "-q" || s == "--quiet") a.quiet = true;
     else if(!s.empty() && s[0] == '-') throw Cli_error("atlas: unknown option " + s + " (see 'dlf atlas --help')");
     else if(a.input.empty()) a.input = s;
     else throw Cli_error("atlas: one mesh only ('" + a.input + "', then '" + s + "')");
   }
   if(a.input.empty()) throw Cli_error("atlas: missing MESH (see 'dlf atlas --help')");
   if(a.output.empty()) throw Cli_error("atlas: missing -o OUT.obj");
+  if(a.texture_size_given && a.texture.empty()) throw Cli_error("atlas: --texture-size applies to --texture only");
   return a;
 }
 
@@ -140,8 +160,14 @@ Atlas_mesh read_and_repair(const std::string& path, Repairs& rep, std::size_t& f
     std::ifstream probe(path);
     if(!probe) throw Cli_error(path + ": cannot open");
   }
-  if(!CGAL::IO::read_polygon_soup(path, points, polygons) && points.empty())
-    throw Cli_error(path + ": empty or unreadable mesh file");
+  {
+    // OFF by the package's own reader (CGAL's parses numbers several times slower).
+    std::vector<Vec3> xyz;
+    if(!dlf_cli::read_polygon_soup(path, xyz, polygons) && xyz.empty())
+      throw Cli_error(path + ": empty or unreadable mesh file");
+    points.reserve(xyz.size());
+    for(const Vec3& p : xyz) points.emplace_back(p[0], p[1], p[2]);
+  }
   file_vertices = points.size();
   if(points.empty()) throw Cli_error(path + ": empty mesh (no vertices)");
   for(std::size_t i = 0; i < points.size(); ++i)
@@ -169,7 +195,12 @@ Atlas_mesh read_and_repair(const std::string& path, Repairs& rep, std::size_t& f
     if(good.empty())
       throw Cli_error(path + ": all " + std::to_string(polygons.size()) + " faces are degenerate (zero area)");
     const std::size_t before = points.size();
-    CGAL::Polygon_mesh_processing::orient_polygon_soup(points, good);
+    // Orienting costs more than the rest of the reading at a million faces:
+    // a triangle soup that is already an oriented manifold skips it.
+    bool triangles = true;
+    for(const auto& p : good) triangles = triangles && p.size() == 3;
+    if(!triangles || !is_oriented_manifold_soup(points.size(), good))
+      CGAL::Polygon_mesh_processing::orient_polygon_soup(points, good);
     rep.nonmanifold_vertices_added += points.size() - before;
     Atlas_mesh mesh;
     CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, good, mesh);
@@ -203,16 +234,6 @@ Atlas_mesh read_and_repair(const std::string& path, Repairs& rep, std::size_t& f
   return mesh;
 }
 
-std::string shortest(double x)
-{
-  char buf[32];
-  for(int p = 6; p <= 17; ++p) {
-    std::snprintf(buf, sizeof buf, "%.*g", p, x);
-    if(std::strtod(buf, nullptr) == x) break;
-  }
-  return buf;
-}
-
 } // namespace
 
 nlohmann::ordered_json atlas_report_json(const SMP::Discrete_lie_flow_atlas_report& r)
@@ -241,6 +262,9 @@ nlohmann::ordered_json atlas_report_json(const SMP::Discrete_lie_flow_atlas_repo
   j["points_outside"] = r.points_outside;
   j["three_border_corner_faces"] = r.three_border_corner_faces;
   j["seconds"] = r.seconds;
+  j["seconds_cut"] = r.seconds_cut;
+  j["seconds_flow"] = r.seconds_flow;
+  j["seconds_pack"] = r.seconds_pack;
   nlohmann::ordered_json charts = nlohmann::ordered_json::array();
   for(const auto& c : r.chart_reports)
     charts.push_back({ { "faces", c.faces }, { "holes", c.holes }, { "split_depth", c.split_depth },
@@ -253,44 +277,90 @@ nlohmann::ordered_json atlas_report_json(const SMP::Discrete_lie_flow_atlas_repo
 
 int atlas_command(const std::vector<std::string>& args)
 {
+  typedef std::chrono::steady_clock Clock;
+  const auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   Atlas_args a = parse(args);
   Repairs rep;
   std::size_t file_vertices = 0;
+  Clock::time_point t0 = Clock::now();
   Atlas_mesh mesh = read_and_repair(a.input, rep, file_vertices, a.quiet);
-  if(!a.quiet) a.options.progress = [](const std::string& s) { std::cerr << "dlf: atlas: " << s << "\n"; };
+  const double seconds_read = since(t0);
+  // One line per chart on stderr; the iterations of a chart large enough to
+  // take seconds as the other commands print them (in place on a terminal).
+  Progress progress(a.quiet ? Verbosity::QUIET : Verbosity::NORMAL, false, stderr);
+  if(!a.quiet) {
+    a.options.progress = [&progress](const std::string& s) { progress.finish(); std::cerr << "dlf: atlas: " << s << "\n"; };
+    a.options.flow.callback = progress.callback();
+    a.options.callback_faces = 20000;
+  }
   auto uv = mesh.add_property_map<Atlas_mesh::Halfedge_index, Atlas_kernel::Point_2>("h:uv").first;
   const SMP::Discrete_lie_flow_atlas_report r = SMP::discrete_lie_flow_atlas(mesh, uv, a.options);
+  progress.finish();
   if(r.code != SMP::OK) {
     const Exit_code code = (r.code == SMP::ERROR_EMPTY_MESH || int(r.code) == int(SMP::ERROR_DEGENERATE_INPUT) ||
                             r.code == SMP::ERROR_NON_TRIANGULAR_MESH) ? EXIT_BAD_INPUT : EXIT_FLOW_ERROR;
     throw Cli_error(a.input + ": " + SMP::discrete_lie_flow_error_message(r.code) + ": " + r.message, code);
   }
   if(!r.valid()) throw Cli_error(a.input + ": the atlas failed its exact checks (nothing written)", EXIT_FLOW_ERROR);
-  // The OBJ: v in the mesh's vertex order (the file's, then added ones), one vt per (vertex, uv).
-  std::ostringstream obj;
-  obj << "# dlf atlas " << a.input << ": " << r.charts << " charts, packing efficiency " << r.packing_efficiency
-      << ", D_area " << r.metrics.d_area << "\n";
+  // The OBJ: v in the mesh's vertex order (the file's, then added ones), one
+  // vt per (vertex, uv) in the order the faces first name them.
+  t0 = Clock::now();
+  std::vector<Vec3> xyz;
+  xyz.reserve(num_vertices(mesh));
   for(auto v : vertices(mesh)) {
     const auto& p = mesh.point(v);
-    obj << "v " << shortest(p.x()) << ' ' << shortest(p.y()) << ' ' << shortest(p.z()) << "\n";
+    xyz.push_back({{ p.x(), p.y(), p.z() }});
   }
-  std::map<std::tuple<std::size_t, double, double>, std::size_t> vt;
-  std::ostringstream vts, fs;
-  for(auto f : faces(mesh)) {
-    fs << "f";
-    for(auto h : halfedges_around_face(halfedge(f, mesh), mesh)) {
-      const auto& q = uv[h];
-      auto ins = vt.emplace(std::make_tuple(std::size_t(target(h, mesh)), q.x(), q.y()), vt.size() + 1);
-      if(ins.second) vts << "vt " << shortest(q.x()) << ' ' << shortest(q.y()) << "\n";
-      fs << ' ' << std::size_t(target(h, mesh)) + 1 << '/' << ins.first->second;
-    }
-    fs << "\n";
-  }
-  obj << vts.str() << fs.str();
+  std::vector<Vec2> vt;
+  std::vector<Triangle> obj_faces, vt_faces;
+  obj_faces.reserve(num_faces(mesh));
+  vt_faces.reserve(num_faces(mesh));
   {
-    std::ofstream out(a.output);
-    if(!(out << obj.str())) throw Cli_error("atlas: cannot write " + a.output);
+    // The vt of each vertex in a list of their own (a vertex on a seam has
+    // one per side): head[v], then next[].
+    std::vector<int> head(xyz.size(), -1), next, vertex_of;
+    for(auto f : faces(mesh)) {
+      Triangle t, w;
+      int k = 0;
+      for(auto h : halfedges_around_face(halfedge(f, mesh), mesh)) {
+        const int v = int(target(h, mesh));
+        const Vec2 q{{ uv[h].x(), uv[h].y() }};
+        int i = head[std::size_t(v)];
+        while(i >= 0 && vt[std::size_t(i)] != q) i = next[std::size_t(i)];
+        if(i < 0) {
+          i = int(vt.size());
+          vt.push_back(q);
+          next.push_back(head[std::size_t(v)]);
+          head[std::size_t(v)] = i;
+        }
+        t[std::size_t(k)] = v;
+        w[std::size_t(k)] = i;
+        ++k;
+      }
+      obj_faces.push_back(t);
+      vt_faces.push_back(w);
+    }
   }
+  std::ostringstream comment;
+  comment << "dlf atlas " << a.input << ": " << r.charts << " charts, packing efficiency " << r.packing_efficiency
+          << ", D_area " << r.metrics.d_area;
+  {
+    std::ofstream out(a.output, std::ios::binary);
+    write_uv_obj(out, xyz, vt, obj_faces, vt_faces, comment.str());
+    if(!(out.flush())) throw Cli_error("atlas: cannot write " + a.output);
+  }
+  if(!a.texture.empty()) {
+    // The atlas is the unit square already: the checkerboard's squares are
+    // equal in uv area, hence in surface area.
+    const Texture_paths t = texture_paths(a.texture);
+    std::ofstream obj(t.obj, std::ios::binary), mtl(t.mtl), png(t.png, std::ios::binary);
+    write_textured_obj(obj, xyz, vt, obj_faces, std::filesystem::path(t.mtl).filename().string(),
+                       comment.str() + " (a checkerboard: squares of equal surface area)", vt_faces);
+    write_checker_mtl(mtl, std::filesystem::path(t.png).filename().string());
+    write_checker_png(png, a.texture_size, 16);
+    if(!obj.flush() || !mtl.flush() || !png.flush()) throw Cli_error("atlas: cannot write " + a.texture + " (or its .mtl, .png)");
+  }
+  const double seconds_write = since(t0);
   if(!a.svg.empty()) {
     // The unit square at 800 px, v up; each triangle's colour: log of its uv
     // area over its share of the surface (white: exact).
@@ -339,6 +409,8 @@ int atlas_command(const std::vector<std::string>& args)
                      { "isolated_vertices", rep.isolated_vertices } };
     const nlohmann::ordered_json atlas = atlas_report_json(r);
     for(const auto& item : atlas.items()) j[item.key()] = item.value();
+    j["seconds_read"] = seconds_read;
+    j["seconds_write"] = seconds_write;
     if(!a.report.empty()) {
       std::ofstream out(a.report);
       if(!(out << j.dump(2) << "\n")) throw Cli_error("atlas: cannot write " + a.report);
