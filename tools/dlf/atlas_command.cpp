@@ -31,6 +31,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -40,6 +41,8 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace dlf_cli {
@@ -69,6 +72,8 @@ const char* atlas_help =
   "  --gutter G             space around each chart, uv units (default 1/1024)\n"
   "  --no-stretch           keep the charts' shapes (shelf packing) instead of\n"
   "                         filling treemap cells by area-preserving stretches\n"
+  "  --keep-duplicates      keep vertices at one position on open edges apart (by default\n"
+  "                         they are merged: a polygon soup's pieces are joined)\n"
   "  -q, --quiet            no progress lines, no summary\n"
   "Exit: 0 valid atlas, every chart converged; 3 valid atlas, a chart stopped short;\n"
   "      1 bad input (nothing written); 2 no atlas.\n";
@@ -80,6 +85,7 @@ struct Atlas_args
   bool texture_size_given = false;
   SMP::Discrete_lie_flow_atlas_options options;
   bool quiet = false;
+  bool merge_duplicates = true;
 };
 
 Atlas_args parse(const std::vector<std::string>& args)
@@ -130,6 +136,7 @@ Atlas_args parse(const std::vector<std::string>& args)
       a.options.gutter = g;
     }
     else if(s == "--no-stretch") a.options.stretch_to_fill = false;
+    else if(s == "--keep-duplicates") a.merge_duplicates = false;
     else if(s == "-q" || s == "--quiet") a.quiet = true;
     else if(!s.empty() && s[0] == '-') throw Cli_error("atlas: unknown option " + s + " (see 'dlf atlas --help')");
     else if(a.input.empty()) a.input = s;
@@ -148,11 +155,55 @@ struct Repairs
   std::size_t nonmanifold_vertices_added = 0;
   std::size_t degenerate_faces_dropped = 0;
   std::size_t isolated_vertices = 0;
+  std::size_t duplicate_vertices_merged = 0;
 };
 
 /// Reads MESH into a triangle mesh, repairing what Polygon_mesh_processing
 /// repairs and saying so; throws `Cli_error` for what cannot be an atlas.
-Atlas_mesh read_and_repair(const std::string& path, Repairs& rep, std::size_t& file_vertices, bool quiet)
+/// A polygon soup's vertices at one position on open edges (a face whose
+/// edge no other face shares) become one, the smallest index: CAD exports
+/// and per-corner formats repeat a vertex on each side of a seam between
+/// pieces, which would otherwise each become charts of their own. The
+/// polygons are renumbered; returns the copies merged.
+std::size_t merge_seam_duplicates(const std::vector<Atlas_kernel::Point_3>& points,
+                                  std::vector<std::vector<std::size_t> >& polygons)
+{
+  const std::size_t n = points.size();
+  std::vector<std::pair<std::size_t, std::size_t> > edges;
+  for(const auto& p : polygons)
+    for(std::size_t k = 0; k < p.size(); ++k) {
+      const std::size_t a = p[k], b = p[(k + 1) % p.size()];
+      if(a < n && b < n && a != b) edges.emplace_back((std::min)(a, b), (std::max)(a, b));
+    }
+  std::sort(edges.begin(), edges.end());
+  std::vector<char> open(n, 0);
+  for(std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i;
+    while(j < edges.size() && edges[j] == edges[i]) ++j;
+    if(j - i == 1) open[edges[i].first] = open[edges[i].second] = 1;
+    i = j;
+  }
+  std::vector<std::size_t> on_open;
+  for(std::size_t v = 0; v < n; ++v)
+    if(open[v]) on_open.push_back(v);
+  const auto position = [&points](std::size_t v) { return std::make_tuple(points[v].x(), points[v].y(), points[v].z()); };
+  std::stable_sort(on_open.begin(), on_open.end(), [&](std::size_t a, std::size_t b) { return position(a) < position(b); });
+  std::vector<std::size_t> to(n);
+  for(std::size_t v = 0; v < n; ++v) to[v] = v;
+  std::size_t merged = 0;
+  for(std::size_t i = 1; i < on_open.size(); ++i)
+    if(position(on_open[i]) == position(on_open[i - 1])) {
+      to[on_open[i]] = to[on_open[i - 1]];
+      ++merged;
+    }
+  if(merged > 0)
+    for(auto& p : polygons)
+      for(std::size_t& v : p)
+        if(v < n) v = to[v];
+  return merged;
+}
+
+Atlas_mesh read_and_repair(const std::string& path, Repairs& rep, std::size_t& file_vertices, bool quiet, bool merge)
 {
   std::vector<Atlas_kernel::Point_3> points;
   std::vector<std::vector<std::size_t> > polygons;
@@ -177,6 +228,7 @@ Atlas_mesh read_and_repair(const std::string& path, Repairs& rep, std::size_t& f
     throw Cli_error(path + ": a point cloud (" + std::to_string(points.size()) + " vertices, no faces); an atlas needs faces");
   auto say = [&](const std::string& line) { if(!quiet) std::cerr << "dlf: atlas: " << line << "\n"; };
   // Polygons with a repeated or out-of-range corner, or fewer than 3, have no area.
+  if(merge) rep.duplicate_vertices_merged = merge_seam_duplicates(points, polygons);
   std::vector<std::vector<std::size_t> > kept;
   for(const auto& p : polygons) {
     bool ok = p.size() >= 3;
@@ -225,6 +277,9 @@ Atlas_mesh read_and_repair(const std::string& path, Repairs& rep, std::size_t& f
   for(auto f : faces(mesh))
     for(auto v : vertices_around_face(halfedge(f, mesh), mesh)) used[std::size_t(v)] = 1;
   for(char u : used) rep.isolated_vertices += u ? 0 : 1;
+  rep.isolated_vertices -= (std::min)(rep.isolated_vertices, rep.duplicate_vertices_merged);
+  if(rep.duplicate_vertices_merged)
+    say(std::to_string(rep.duplicate_vertices_merged) + " duplicate vertices merged (a polygon soup: vertices at one position on open edges; their v lines kept, unused; --keep-duplicates keeps them apart)");
   if(rep.polygons_triangulated) say(std::to_string(rep.polygons_triangulated) + " polygons triangulated");
   if(rep.nonmanifold_vertices_added)
     say(std::to_string(rep.nonmanifold_vertices_added) + " vertices added to make the mesh manifold (non-manifold vertices and edges split; appended after the file's vertices)");
@@ -283,7 +338,7 @@ int atlas_command(const std::vector<std::string>& args)
   Repairs rep;
   std::size_t file_vertices = 0;
   Clock::time_point t0 = Clock::now();
-  Atlas_mesh mesh = read_and_repair(a.input, rep, file_vertices, a.quiet);
+  Atlas_mesh mesh = read_and_repair(a.input, rep, file_vertices, a.quiet, a.merge_duplicates);
   const double seconds_read = since(t0);
   // One line per chart on stderr; the iterations of a chart large enough to
   // take seconds as the other commands print them (in place on a terminal).
@@ -406,7 +461,8 @@ int atlas_command(const std::vector<std::string>& args)
     j["repairs"] = { { "polygons_triangulated", rep.polygons_triangulated },
                      { "nonmanifold_vertices_added", rep.nonmanifold_vertices_added },
                      { "degenerate_faces_dropped", rep.degenerate_faces_dropped },
-                     { "isolated_vertices", rep.isolated_vertices } };
+                     { "isolated_vertices", rep.isolated_vertices },
+                     { "duplicate_vertices_merged", rep.duplicate_vertices_merged } };
     const nlohmann::ordered_json atlas = atlas_report_json(r);
     for(const auto& item : atlas.items()) j[item.key()] = item.value();
     j["seconds_read"] = seconds_read;
