@@ -6,10 +6,12 @@
 // Input hygiene with CGAL's Polygon_mesh_processing, said aloud: polygons
 // triangulated, non-manifold vertices duplicated (appended after the
 // file's vertices), degenerate faces dropped (they cannot have a positive
-// uv area), isolated vertices kept and counted; one stderr line and one
-// report field each. The OBJ keeps the file's `v` lines in order; `vt` one
-// per chart vertex, faces `f v/vt`. `--svg`: the packed atlas, each
-// triangle coloured by its uv area against its share of the surface.
+// uv area), isolated vertices kept and counted, a polygon soup's duplicate
+// vertices on open edges merged; one stderr line and one report field
+// each. The OBJ keeps the file's `v` lines in order; `vt` one per chart
+// vertex, faces `f v/vt`. `--svg`: the packed atlas, each triangle
+// coloured by its uv area against its share of the surface; `--texture`:
+// the OBJ with a checkerboard of squares equal in surface area.
 
 #include "cli_error.h"
 #include "commands.h"
