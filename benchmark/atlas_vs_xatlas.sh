@@ -17,7 +17,9 @@
 # xatlas-web reads 16-bit indices: meshes of more than 65,535 vertices are
 # skipped (benchmark/loop_subdivide.cjs makes 100K-face meshes within that).
 # Environment: BUILD (default build), DLF (default BUILD/tools/dlf), OUT
-# (default BUILD/atlas_vs_xatlas).
+# (default BUILD/atlas_vs_xatlas), PICTURE (a mesh's name, e.g. cow: both
+# atlases of it side by side in OUT/NAME.png, benchmark/atlas_picture.py;
+# doc/images/atlas_vs_xatlas_cow.png is PICTURE=cow).
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 BUILD=${BUILD:-$here/../build}
@@ -50,6 +52,9 @@ for mesh in "$@"; do
        "\"dlf\": $dlf_score, \"xatlas\": $xatlas_score}" >> "$rows"
   echo "atlas_vs_xatlas: $name done" >&2
 done
+if [ -n "${PICTURE:-}" ] && [ -s "$OUT/$PICTURE.dlf.obj" ] && [ -s "$OUT/$PICTURE.xatlas.obj" ]; then
+  python3 "$here/atlas_picture.py" "$OUT/$PICTURE.png" "dlf atlas" "$OUT/$PICTURE.dlf.obj" xatlas "$OUT/$PICTURE.xatlas.obj"
+fi
 python3 - "$rows" <<'PY'
 import json, sys, statistics
 rows = [json.loads(l) for l in open(sys.argv[1])]

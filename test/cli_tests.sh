@@ -1056,6 +1056,48 @@ check "score of an atlas: says so" grep -q "overlapping uv triangle pairs" knot_
 check "atlas on polygons exits 0" equals "$?" 0
 check "atlas on polygons: one stderr line says so" grep -q "polygons triangulated" dt.err
 check "atlas on polygons: report field" number_is "$(json_get dt.json repairs polygons_triangulated)" ">" 0
+# --texture: the atlas's own uv (the unit square, area-preserving, so the
+# checkerboard's squares are equal in surface area) in a textured OBJ with
+# its material and PNG; -q as --quiet.
+"$DLF" atlas "$MESHES/knot1.off" -o knot_tex_uv.obj --texture knot_tex.obj --texture-size 64 -q > tex.out 2> tex.err
+check "atlas --texture exits 0" equals "$?" 0
+check "atlas -q: nothing on stdout or stderr" equals "$(cat tex.out tex.err | wc -c)" 0
+check "atlas --texture: the OBJ names its material" grep -q '^mtllib knot_tex.mtl$' knot_tex.obj
+check "atlas --texture: the material names the PNG" grep -q '^map_Kd knot_tex.png$' knot_tex.mtl
+check "atlas --texture: a PNG of 64 x 64 pixels" equals \
+  "$(python3 -c "import struct,sys; d=open('knot_tex.png','rb').read(24); print(d[:8]==b'\\x89PNG\\r\\n\\x1a\\n', *struct.unpack('>II', d[16:24]))")" "True 64 64"
+check "atlas --texture: the atlas's v, vt and f lines" equals \
+  "$(grep -E '^(v|vt|f) ' knot_tex.obj | md5sum)" "$(grep -E '^(v|vt|f) ' knot_tex_uv.obj | md5sum)"
+expect_atlas_error() { # expect_atlas_error DESCRIPTION PATTERN ARGS...: exit 1, one line, nothing written
+  local what=$1 pattern=$2; shift 2
+  rm -f bad_atlas.obj
+  "$DLF" atlas "$@" > bad_atlas.out 2> bad_atlas.err
+  check "$what: exits 1" equals "$?" 1
+  check "$what: says so" grep -q "$pattern" bad_atlas.err
+  check "$what: nothing written" test ! -e bad_atlas.obj
+}
+expect_atlas_error "atlas --texture not .obj" "texture expects a file name ending in .obj" \
+  "$MESHES/knot1.off" -o bad_atlas.obj --texture knot_tex.png
+expect_atlas_error "atlas --texture-size alone" "texture-size applies to --texture only" \
+  "$MESHES/knot1.off" -o bad_atlas.obj --texture-size 64
+# A polygon soup (boeing.off: 2,741 vertices at 1,264 positions, its pieces
+# repeating the vertices of their shared edges): merged, said on one line
+# and in the report; one component, not 122. --keep-duplicates keeps them.
+"$DLF" atlas "$MESHES/boeing.off" -o boeing_atlas.obj --report boeing_atlas.json > boeing.out 2> boeing.err
+check "atlas boeing exits 0" equals "$?" 0
+check "atlas boeing: one line says the duplicates were merged" equals \
+  "$(grep -c '1477 duplicate vertices merged (a polygon soup' boeing.err)" 1
+check "atlas boeing: report field" equals "$(json_get boeing_atlas.json repairs duplicate_vertices_merged)" 1477
+check "atlas boeing: one component" equals "$(json_get boeing_atlas.json "" components)" 1
+check "atlas boeing: valid" equals "$(json_get boeing_atlas.json "" valid)" true
+check "atlas boeing: merged copies are not counted isolated" equals "$(json_get boeing_atlas.json repairs isolated_vertices)" 0
+check "atlas boeing: the file's 2741 v lines" equals "$(grep -c '^v ' boeing_atlas.obj)" 2741
+"$DLF" atlas "$MESHES/boeing.off" -o boeing_kept.obj --report boeing_kept.json --keep-duplicates -q
+check "atlas boeing --keep-duplicates: 122 components" equals "$(json_get boeing_kept.json "" components)" 122
+check "atlas boeing --keep-duplicates: nothing merged" equals "$(json_get boeing_kept.json repairs duplicate_vertices_merged)" 0
+# knot1 has no duplicates: nothing merged, the repair line absent.
+check "atlas knot1: no duplicates merged" equals "$(json_get knot_atlas.json repairs duplicate_vertices_merged)" 0
+
 # Several components: each handled.
 "$DLF" atlas "$MESHES/blobby_3cc.off" -o b3.obj --report b3.json --quiet
 check "atlas blobby_3cc exits 0" equals "$?" 0

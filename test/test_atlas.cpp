@@ -416,6 +416,65 @@ TEST(Atlas, ChartsThatCannotConvergeNorSplitBecomeTriangles)
   EXPECT_NEAR(r.metrics.d_area, 2., 1e-9); // each triangle isometric
 }
 
+TEST(Atlas, HalfedgeTwinsPairOnlyEdgesOfTwoConsistentFaces)
+{
+  namespace D = SMP::internal::dlf;
+  // A 9×9 grid of vertices with every third face flipped, a face repeating
+  // a directed edge, and an edge of three faces; against a plain map of
+  // directed edges: a halfedge a → b has a twin when a → b and b → a occur
+  // once each.
+  std::vector<D::Face> F;
+  const int n = 9;
+  for(int j = 0; j + 1 < n; ++j)
+    for(int i = 0; i + 1 < n; ++i) {
+      const int a = j * n + i, b = a + 1, c = a + n + 1, d = a + n;
+      F.push_back(F.size() % 3 == 2 ? D::Face{{ a, c, b }} : D::Face{{ a, b, c }});
+      F.push_back(D::Face{{ a, c, d }});
+    }
+  F.push_back(D::Face{{ 0, 1, 100 }});  // 0 → 1 once more
+  F.push_back(D::Face{{ 101, 102, 103 }});
+  F.push_back(D::Face{{ 102, 101, 104 }});
+  F.push_back(D::Face{{ 102, 101, 105 }}); // 102 → 101 twice: an edge of three faces
+  std::map<std::pair<int, int>, std::vector<long> > directed;
+  for(std::size_t h = 0; h < 3 * F.size(); ++h) directed[{ F[h / 3][h % 3], F[h / 3][(h % 3 + 1) % 3] }].push_back(long(h));
+  const std::vector<long> twin = D::halfedge_twins(F);
+  ASSERT_EQ(twin.size(), 3 * F.size());
+  std::size_t paired = 0;
+  for(std::size_t h = 0; h < twin.size(); ++h) {
+    const int a = F[h / 3][h % 3], b = F[h / 3][(h % 3 + 1) % 3];
+    const std::vector<long>& self = directed[{ a, b }];
+    const auto other = directed.find({ b, a });
+    const long expected = self.size() == 1 && other != directed.end() && other->second.size() == 1 ? other->second[0] : -1;
+    EXPECT_EQ(twin[h], expected) << "halfedge " << h << " (" << a << " -> " << b << ")";
+    paired += twin[h] >= 0;
+  }
+  EXPECT_GT(paired, 200u);
+  EXPECT_EQ(twin[0], -1); // 0 → 1 repeated
+  EXPECT_EQ(twin[3 * (F.size() - 3)], -1); // 101 → 102 against two 102 → 101
+}
+
+TEST(Atlas, IterationCallbackOnlyForChartsOfCallbackFaces)
+{
+  // knot1 (6,400 faces, one chart): its flow's iterations reach the
+  // callback with callback_faces at most its size, none above.
+  for(const std::size_t limit : { std::size_t(0), std::size_t(6400), std::size_t(6401) }) {
+    Mesh m = load("knot1");
+    UV_map uv = uv_map(m);
+    SMP::Discrete_lie_flow_atlas_options o;
+    std::size_t calls = 0;
+    o.flow.callback = [&calls](const SMP::Discrete_lie_flow_iteration&) { ++calls; return true; };
+    o.callback_faces = limit;
+    const SMP::Discrete_lie_flow_atlas_report r = SMP::discrete_lie_flow_atlas(m, uv, o);
+    ASSERT_EQ(r.charts, 1u);
+    if(limit <= 6400) {
+      EXPECT_EQ(calls, r.chart_reports[0].iterations) << limit;
+      EXPECT_GT(calls, 0u) << limit;
+    }
+    else
+      EXPECT_EQ(calls, 0u);
+  }
+}
+
 TEST(AtlasScore, ChartsSeamsFoldsAndOverlapsOfAnyAtlas)
 {
   // The scorer of other tools' atlases: a square of two triangles (chart A),

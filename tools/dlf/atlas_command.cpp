@@ -6,15 +6,21 @@
 // Input hygiene with CGAL's Polygon_mesh_processing, said aloud: polygons
 // triangulated, non-manifold vertices duplicated (appended after the
 // file's vertices), degenerate faces dropped (they cannot have a positive
-// uv area), isolated vertices kept and counted; one stderr line and one
-// report field each. The OBJ keeps the file's `v` lines in order; `vt` one
-// per chart vertex, faces `f v/vt`. `--svg`: the packed atlas, each
-// triangle coloured by its uv area against its share of the surface.
+// uv area), isolated vertices kept and counted, a polygon soup's duplicate
+// vertices on open edges merged; one stderr line and one report field
+// each. The OBJ keeps the file's `v` lines in order; `vt` one per chart
+// vertex, faces `f v/vt`. `--svg`: the packed atlas, each triangle
+// coloured by its uv area against its share of the surface; `--texture`:
+// the OBJ with a checkerboard of squares equal in surface area.
 
 #include "cli_error.h"
 #include "commands.h"
+#include "mesh_input.h"
+#include "obj_io.h"
 #include "output_files.h"
+#include "progress.h"
 #include "svg_common.h"
+#include "texture_output.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
@@ -27,15 +33,18 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <map>
 #include <sstream>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace dlf_cli {
@@ -57,20 +66,28 @@ const char* atlas_help =
   "  --report R.json        the report (charts, seam length, packing, D_area, repairs, checks)\n"
   "  --csv R.csv            the report as CSV: a header and one row, its keys flattened\n"
   "  --svg A.svg            the packed atlas, each triangle coloured by its uv area over its share\n"
+  "  --texture NAME.obj     the mesh textured by a checkerboard (NAME.obj, .mtl, .png): the atlas\n"
+  "                         preserves area, so every square covers the same area of the surface\n"
+  "  --texture-size N       the checkerboard's pixels a side (default 1024)\n"
   "  --border square|circle the charts' border (default square: fills its cell)\n"
   "  --tips K               tips a closed component's seam runs through (default 2)\n"
   "  --gutter G             space around each chart, uv units (default 1/1024)\n"
   "  --no-stretch           keep the charts' shapes (shelf packing) instead of\n"
   "                         filling treemap cells by area-preserving stretches\n"
-  "  --quiet                no progress lines\n"
+  "  --keep-duplicates      keep vertices at one position on open edges apart (by default\n"
+  "                         they are merged: a polygon soup's pieces are joined)\n"
+  "  -q, --quiet            no progress lines, no summary\n"
   "Exit: 0 valid atlas, every chart converged; 3 valid atlas, a chart stopped short;\n"
   "      1 bad input (nothing written); 2 no atlas.\n";
 
 struct Atlas_args
 {
-  std::string input, output, report, csv, svg;
+  std::string input, output, report, csv, svg, texture;
+  int texture_size = 1024;
+  bool texture_size_given = false;
   SMP::Discrete_lie_flow_atlas_options options;
   bool quiet = false;
+  bool merge_duplicates = true;
 };
 
 Atlas_args parse(const std::vector<std::string>& args)
@@ -95,6 +112,16 @@ Atlas_args parse(const std::vector<std::string>& args)
     else if(s == "--report") a.report = value(i);
     else if(s == "--csv") a.csv = value(i);
     else if(s == "--svg") a.svg = value(i);
+    else if(s == "--texture") {
+      a.texture = value(i);
+      texture_paths(a.texture); // a name that is not NAME.obj fails now, not after the flow
+    }
+    else if(s == "--texture-size") {
+      const double n = number(i);
+      if(!(n >= 16 && n <= 16384 && n == std::floor(n))) throw Cli_error("atlas: --texture-size is a whole number from 16 to 16384");
+      a.texture_size = int(n);
+      a.texture_size_given = true;
+    }
     else if(s == "--border") {
       const std::string& b = value(i);
       if(b != "square" && b != "circle") throw Cli_error("atlas: --border is square or circle, not '" + b + "'");
@@ -111,13 +138,15 @@ Atlas_args parse(const std::vector<std::string>& args)
       a.options.gutter = g;
     }
     else if(s == "--no-stretch") a.options.stretch_to_fill = false;
-    else if(s == "--quiet") a.quiet = true;
+    else if(s == "--keep-duplicates") a.merge_duplicates = false;
+    else if(s == "-q" || s == "--quiet") a.quiet = true;
     else if(!s.empty() && s[0] == '-') throw Cli_error("atlas: unknown option " + s + " (see 'dlf atlas --help')");
     else if(a.input.empty()) a.input = s;
     else throw Cli_error("atlas: one mesh only ('" + a.input + "', then '" + s + "')");
   }
   if(a.input.empty()) throw Cli_error("atlas: missing MESH (see 'dlf atlas --help')");
   if(a.output.empty()) throw Cli_error("atlas: missing -o OUT.obj");
+  if(a.texture_size_given && a.texture.empty()) throw Cli_error("atlas: --texture-size applies to --texture only");
   return a;
 }
 
@@ -128,11 +157,55 @@ struct Repairs
   std::size_t nonmanifold_vertices_added = 0;
   std::size_t degenerate_faces_dropped = 0;
   std::size_t isolated_vertices = 0;
+  std::size_t duplicate_vertices_merged = 0;
 };
 
 /// Reads MESH into a triangle mesh, repairing what Polygon_mesh_processing
 /// repairs and saying so; throws `Cli_error` for what cannot be an atlas.
-Atlas_mesh read_and_repair(const std::string& path, Repairs& rep, std::size_t& file_vertices, bool quiet)
+/// A polygon soup's vertices at one position on open edges (a face whose
+/// edge no other face shares) become one, the smallest index: CAD exports
+/// and per-corner formats repeat a vertex on each side of a seam between
+/// pieces, which would otherwise each become charts of their own. The
+/// polygons are renumbered; returns the copies merged.
+std::size_t merge_seam_duplicates(const std::vector<Atlas_kernel::Point_3>& points,
+                                  std::vector<std::vector<std::size_t> >& polygons)
+{
+  const std::size_t n = points.size();
+  std::vector<std::pair<std::size_t, std::size_t> > edges;
+  for(const auto& p : polygons)
+    for(std::size_t k = 0; k < p.size(); ++k) {
+      const std::size_t a = p[k], b = p[(k + 1) % p.size()];
+      if(a < n && b < n && a != b) edges.emplace_back((std::min)(a, b), (std::max)(a, b));
+    }
+  std::sort(edges.begin(), edges.end());
+  std::vector<char> open(n, 0);
+  for(std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i;
+    while(j < edges.size() && edges[j] == edges[i]) ++j;
+    if(j - i == 1) open[edges[i].first] = open[edges[i].second] = 1;
+    i = j;
+  }
+  std::vector<std::size_t> on_open;
+  for(std::size_t v = 0; v < n; ++v)
+    if(open[v]) on_open.push_back(v);
+  const auto position = [&points](std::size_t v) { return std::make_tuple(points[v].x(), points[v].y(), points[v].z()); };
+  std::stable_sort(on_open.begin(), on_open.end(), [&](std::size_t a, std::size_t b) { return position(a) < position(b); });
+  std::vector<std::size_t> to(n);
+  for(std::size_t v = 0; v < n; ++v) to[v] = v;
+  std::size_t merged = 0;
+  for(std::size_t i = 1; i < on_open.size(); ++i)
+    if(position(on_open[i]) == position(on_open[i - 1])) {
+      to[on_open[i]] = to[on_open[i - 1]];
+      ++merged;
+    }
+  if(merged > 0)
+    for(auto& p : polygons)
+      for(std::size_t& v : p)
+        if(v < n) v = to[v];
+  return merged;
+}
+
+Atlas_mesh read_and_repair(const std::string& path, Repairs& rep, std::size_t& file_vertices, bool quiet, bool merge)
 {
   std::vector<Atlas_kernel::Point_3> points;
   std::vector<std::vector<std::size_t> > polygons;
@@ -140,8 +213,14 @@ Atlas_mesh read_and_repair(const std::string& path, Repairs& rep, std::size_t& f
     std::ifstream probe(path);
     if(!probe) throw Cli_error(path + ": cannot open");
   }
-  if(!CGAL::IO::read_polygon_soup(path, points, polygons) && points.empty())
-    throw Cli_error(path + ": empty or unreadable mesh file");
+  {
+    // OFF by the package's own reader (CGAL's parses numbers several times slower).
+    std::vector<Vec3> xyz;
+    if(!dlf_cli::read_polygon_soup(path, xyz, polygons) && xyz.empty())
+      throw Cli_error(path + ": empty or unreadable mesh file");
+    points.reserve(xyz.size());
+    for(const Vec3& p : xyz) points.emplace_back(p[0], p[1], p[2]);
+  }
   file_vertices = points.size();
   if(points.empty()) throw Cli_error(path + ": empty mesh (no vertices)");
   for(std::size_t i = 0; i < points.size(); ++i)
@@ -151,6 +230,7 @@ Atlas_mesh read_and_repair(const std::string& path, Repairs& rep, std::size_t& f
     throw Cli_error(path + ": a point cloud (" + std::to_string(points.size()) + " vertices, no faces); an atlas needs faces");
   auto say = [&](const std::string& line) { if(!quiet) std::cerr << "dlf: atlas: " << line << "\n"; };
   // Polygons with a repeated or out-of-range corner, or fewer than 3, have no area.
+  if(merge) rep.duplicate_vertices_merged = merge_seam_duplicates(points, polygons);
   std::vector<std::vector<std::size_t> > kept;
   for(const auto& p : polygons) {
     bool ok = p.size() >= 3;
@@ -169,7 +249,12 @@ Atlas_mesh read_and_repair(const std::string& path, Repairs& rep, std::size_t& f
     if(good.empty())
       throw Cli_error(path + ": all " + std::to_string(polygons.size()) + " faces are degenerate (zero area)");
     const std::size_t before = points.size();
-    CGAL::Polygon_mesh_processing::orient_polygon_soup(points, good);
+    // Orienting costs more than the rest of the reading at a million faces:
+    // a triangle soup that is already an oriented manifold skips it.
+    bool triangles = true;
+    for(const auto& p : good) triangles = triangles && p.size() == 3;
+    if(!triangles || !is_oriented_manifold_soup(points.size(), good))
+      CGAL::Polygon_mesh_processing::orient_polygon_soup(points, good);
     rep.nonmanifold_vertices_added += points.size() - before;
     Atlas_mesh mesh;
     CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, good, mesh);
@@ -194,6 +279,9 @@ Atlas_mesh read_and_repair(const std::string& path, Repairs& rep, std::size_t& f
   for(auto f : faces(mesh))
     for(auto v : vertices_around_face(halfedge(f, mesh), mesh)) used[std::size_t(v)] = 1;
   for(char u : used) rep.isolated_vertices += u ? 0 : 1;
+  rep.isolated_vertices -= (std::min)(rep.isolated_vertices, rep.duplicate_vertices_merged);
+  if(rep.duplicate_vertices_merged)
+    say(std::to_string(rep.duplicate_vertices_merged) + " duplicate vertices merged (a polygon soup: vertices at one position on open edges; their v lines kept, unused; --keep-duplicates keeps them apart)");
   if(rep.polygons_triangulated) say(std::to_string(rep.polygons_triangulated) + " polygons triangulated");
   if(rep.nonmanifold_vertices_added)
     say(std::to_string(rep.nonmanifold_vertices_added) + " vertices added to make the mesh manifold (non-manifold vertices and edges split; appended after the file's vertices)");
@@ -201,16 +289,6 @@ Atlas_mesh read_and_repair(const std::string& path, Repairs& rep, std::size_t& f
     say(std::to_string(rep.degenerate_faces_dropped) + " degenerate faces (zero area) dropped: they have no uv");
   if(rep.isolated_vertices) say(std::to_string(rep.isolated_vertices) + " isolated vertices kept as v lines, ignored");
   return mesh;
-}
-
-std::string shortest(double x)
-{
-  char buf[32];
-  for(int p = 6; p <= 17; ++p) {
-    std::snprintf(buf, sizeof buf, "%.*g", p, x);
-    if(std::strtod(buf, nullptr) == x) break;
-  }
-  return buf;
 }
 
 } // namespace
@@ -241,6 +319,9 @@ nlohmann::ordered_json atlas_report_json(const SMP::Discrete_lie_flow_atlas_repo
   j["points_outside"] = r.points_outside;
   j["three_border_corner_faces"] = r.three_border_corner_faces;
   j["seconds"] = r.seconds;
+  j["seconds_cut"] = r.seconds_cut;
+  j["seconds_flow"] = r.seconds_flow;
+  j["seconds_pack"] = r.seconds_pack;
   nlohmann::ordered_json charts = nlohmann::ordered_json::array();
   for(const auto& c : r.chart_reports)
     charts.push_back({ { "faces", c.faces }, { "holes", c.holes }, { "split_depth", c.split_depth },
@@ -253,44 +334,90 @@ nlohmann::ordered_json atlas_report_json(const SMP::Discrete_lie_flow_atlas_repo
 
 int atlas_command(const std::vector<std::string>& args)
 {
+  typedef std::chrono::steady_clock Clock;
+  const auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   Atlas_args a = parse(args);
   Repairs rep;
   std::size_t file_vertices = 0;
-  Atlas_mesh mesh = read_and_repair(a.input, rep, file_vertices, a.quiet);
-  if(!a.quiet) a.options.progress = [](const std::string& s) { std::cerr << "dlf: atlas: " << s << "\n"; };
+  Clock::time_point t0 = Clock::now();
+  Atlas_mesh mesh = read_and_repair(a.input, rep, file_vertices, a.quiet, a.merge_duplicates);
+  const double seconds_read = since(t0);
+  // One line per chart on stderr; the iterations of a chart large enough to
+  // take seconds as the other commands print them (in place on a terminal).
+  Progress progress(a.quiet ? Verbosity::QUIET : Verbosity::NORMAL, false, stderr);
+  if(!a.quiet) {
+    a.options.progress = [&progress](const std::string& s) { progress.finish(); std::cerr << "dlf: atlas: " << s << "\n"; };
+    a.options.flow.callback = progress.callback();
+    a.options.callback_faces = 20000;
+  }
   auto uv = mesh.add_property_map<Atlas_mesh::Halfedge_index, Atlas_kernel::Point_2>("h:uv").first;
   const SMP::Discrete_lie_flow_atlas_report r = SMP::discrete_lie_flow_atlas(mesh, uv, a.options);
+  progress.finish();
   if(r.code != SMP::OK) {
     const Exit_code code = (r.code == SMP::ERROR_EMPTY_MESH || int(r.code) == int(SMP::ERROR_DEGENERATE_INPUT) ||
                             r.code == SMP::ERROR_NON_TRIANGULAR_MESH) ? EXIT_BAD_INPUT : EXIT_FLOW_ERROR;
     throw Cli_error(a.input + ": " + SMP::discrete_lie_flow_error_message(r.code) + ": " + r.message, code);
   }
   if(!r.valid()) throw Cli_error(a.input + ": the atlas failed its exact checks (nothing written)", EXIT_FLOW_ERROR);
-  // The OBJ: v in the mesh's vertex order (the file's, then added ones), one vt per (vertex, uv).
-  std::ostringstream obj;
-  obj << "# dlf atlas " << a.input << ": " << r.charts << " charts, packing efficiency " << r.packing_efficiency
-      << ", D_area " << r.metrics.d_area << "\n";
+  // The OBJ: v in the mesh's vertex order (the file's, then added ones), one
+  // vt per (vertex, uv) in the order the faces first name them.
+  t0 = Clock::now();
+  std::vector<Vec3> xyz;
+  xyz.reserve(num_vertices(mesh));
   for(auto v : vertices(mesh)) {
     const auto& p = mesh.point(v);
-    obj << "v " << shortest(p.x()) << ' ' << shortest(p.y()) << ' ' << shortest(p.z()) << "\n";
+    xyz.push_back({{ p.x(), p.y(), p.z() }});
   }
-  std::map<std::tuple<std::size_t, double, double>, std::size_t> vt;
-  std::ostringstream vts, fs;
-  for(auto f : faces(mesh)) {
-    fs << "f";
-    for(auto h : halfedges_around_face(halfedge(f, mesh), mesh)) {
-      const auto& q = uv[h];
-      auto ins = vt.emplace(std::make_tuple(std::size_t(target(h, mesh)), q.x(), q.y()), vt.size() + 1);
-      if(ins.second) vts << "vt " << shortest(q.x()) << ' ' << shortest(q.y()) << "\n";
-      fs << ' ' << std::size_t(target(h, mesh)) + 1 << '/' << ins.first->second;
-    }
-    fs << "\n";
-  }
-  obj << vts.str() << fs.str();
+  std::vector<Vec2> vt;
+  std::vector<Triangle> obj_faces, vt_faces;
+  obj_faces.reserve(num_faces(mesh));
+  vt_faces.reserve(num_faces(mesh));
   {
-    std::ofstream out(a.output);
-    if(!(out << obj.str())) throw Cli_error("atlas: cannot write " + a.output);
+    // The vt of each vertex in a list of their own (a vertex on a seam has
+    // one per side): head[v], then next[].
+    std::vector<int> head(xyz.size(), -1), next, vertex_of;
+    for(auto f : faces(mesh)) {
+      Triangle t, w;
+      int k = 0;
+      for(auto h : halfedges_around_face(halfedge(f, mesh), mesh)) {
+        const int v = int(target(h, mesh));
+        const Vec2 q{{ uv[h].x(), uv[h].y() }};
+        int i = head[std::size_t(v)];
+        while(i >= 0 && vt[std::size_t(i)] != q) i = next[std::size_t(i)];
+        if(i < 0) {
+          i = int(vt.size());
+          vt.push_back(q);
+          next.push_back(head[std::size_t(v)]);
+          head[std::size_t(v)] = i;
+        }
+        t[std::size_t(k)] = v;
+        w[std::size_t(k)] = i;
+        ++k;
+      }
+      obj_faces.push_back(t);
+      vt_faces.push_back(w);
+    }
   }
+  std::ostringstream comment;
+  comment << "dlf atlas " << a.input << ": " << r.charts << " charts, packing efficiency " << r.packing_efficiency
+          << ", D_area " << r.metrics.d_area;
+  {
+    std::ofstream out(a.output, std::ios::binary);
+    write_uv_obj(out, xyz, vt, obj_faces, vt_faces, comment.str());
+    if(!(out.flush())) throw Cli_error("atlas: cannot write " + a.output);
+  }
+  if(!a.texture.empty()) {
+    // The atlas is the unit square already: the checkerboard's squares are
+    // equal in uv area, hence in surface area.
+    const Texture_paths t = texture_paths(a.texture);
+    std::ofstream obj(t.obj, std::ios::binary), mtl(t.mtl), png(t.png, std::ios::binary);
+    write_textured_obj(obj, xyz, vt, obj_faces, std::filesystem::path(t.mtl).filename().string(),
+                       comment.str() + " (a checkerboard: squares of equal surface area)", vt_faces);
+    write_checker_mtl(mtl, std::filesystem::path(t.png).filename().string());
+    write_checker_png(png, a.texture_size, 16);
+    if(!obj.flush() || !mtl.flush() || !png.flush()) throw Cli_error("atlas: cannot write " + a.texture + " (or its .mtl, .png)");
+  }
+  const double seconds_write = since(t0);
   if(!a.svg.empty()) {
     // The unit square at 800 px, v up; each triangle's colour: log of its uv
     // area over its share of the surface (white: exact).
@@ -336,9 +463,12 @@ int atlas_command(const std::vector<std::string>& args)
     j["repairs"] = { { "polygons_triangulated", rep.polygons_triangulated },
                      { "nonmanifold_vertices_added", rep.nonmanifold_vertices_added },
                      { "degenerate_faces_dropped", rep.degenerate_faces_dropped },
-                     { "isolated_vertices", rep.isolated_vertices } };
+                     { "isolated_vertices", rep.isolated_vertices },
+                     { "duplicate_vertices_merged", rep.duplicate_vertices_merged } };
     const nlohmann::ordered_json atlas = atlas_report_json(r);
     for(const auto& item : atlas.items()) j[item.key()] = item.value();
+    j["seconds_read"] = seconds_read;
+    j["seconds_write"] = seconds_write;
     if(!a.report.empty()) {
       std::ofstream out(a.report);
       if(!(out << j.dump(2) << "\n")) throw Cli_error("atlas: cannot write " + a.report);

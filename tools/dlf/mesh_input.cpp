@@ -380,6 +380,21 @@ bool is_oriented_manifold(std::size_t n, const std::vector<Polygon>& triangles)
 
 } // namespace
 
+bool read_polygon_soup(const std::string& path, std::vector<Vec3>& xyz, std::vector<std::vector<std::size_t> >& polygons)
+{
+  std::vector<Soup_point> points;
+  const bool ok = has_off_extension(path) ? read_off_soup(path, points, polygons) : CGAL::IO::read_polygon_soup(path, points, polygons);
+  xyz.clear();
+  xyz.reserve(points.size());
+  for(const Soup_point& p : points) xyz.push_back({{ p.x(), p.y(), p.z() }});
+  return ok;
+}
+
+bool is_oriented_manifold_soup(std::size_t n, const std::vector<std::vector<std::size_t> >& triangles)
+{
+  return is_oriented_manifold(n, triangles);
+}
+
 Indexed_mesh read_triangle_mesh(const std::string& path)
 {
   if(!std::ifstream(path))

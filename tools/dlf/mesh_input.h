@@ -39,6 +39,18 @@ Indexed_mesh read_triangle_mesh(const std::string& path);
 Indexed_mesh checked_triangle_mesh(std::vector<Vec3> xyz, std::vector<std::vector<std::size_t> > polygons,
                                    const std::string& name);
 
+/// The file's vertices and polygons as they are (no check, no
+/// reordering): OFF by the package's own reader, other formats by CGAL's.
+/// False when the file cannot be read as a mesh; throws `Cli_error` for an
+/// OFF whose header announces more than the file holds.
+bool read_polygon_soup(const std::string& path, std::vector<Vec3>& xyz, std::vector<std::vector<std::size_t> >& polygons);
+
+/// Whether a soup of triangles (each of 3 distinct vertices below `n`) is
+/// a consistently oriented manifold mesh: no directed edge used twice, the
+/// faces around each vertex one fan (by sorting; CGAL's
+/// is_polygon_soup_a_polygon_mesh() decides the same with trees of pairs).
+bool is_oriented_manifold_soup(std::size_t n, const std::vector<std::vector<std::size_t> >& triangles);
+
 /// A border loop: its vertices in walking order, from its smallest index.
 struct Border_loop
 {

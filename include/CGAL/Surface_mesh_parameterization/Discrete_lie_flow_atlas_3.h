@@ -87,6 +87,7 @@ inline void flatten_atlas_chart(const Atlas_piece& piece, const Discrete_lie_flo
   if(opt.small_chart_tolerance > 0 && piece.faces.size() < flow.disk.coarse_to_fine_faces)
     flow.tolerance = (std::min)(flow.tolerance, opt.small_chart_tolerance);
   flow.face_density = piece.density;
+  if(piece.faces.size() < opt.callback_faces) flow.callback = nullptr;
   auto uvmap = mesh.add_property_map<Vertex_index, CGAL::Simple_cartesian<double>::Point_2>("v:atlas_uv").first;
   auto run = [&](auto& parameterizer) {
     const Error_code code = parameterize(mesh, parameterizer, bhd, uvmap);

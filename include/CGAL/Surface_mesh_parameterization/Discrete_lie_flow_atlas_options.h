@@ -82,6 +82,11 @@ struct Discrete_lie_flow_atlas_options
   std::size_t max_border_peels = 3;
   /// Called with one line per stage (cutting, each chart, packing); may be empty.
   std::function<void(const std::string&)> progress;
+  /// `flow.callback` (each iteration; false stops the chart's flow) is called
+  /// for the charts of at least this many faces only: an atlas of a
+  /// thousand small charts would report tens of thousands of iterations.
+  /// 0: every chart.
+  std::size_t callback_faces = 0;
 };
 
 /// \ingroup PkgDiscreteLieFlowOptions

@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -40,22 +39,34 @@ inline std::size_t prev_in_face(std::size_t h) { return h - h % 3 + (h % 3 + 2) 
 /// without twin: the surface is opened there rather than misread.
 inline std::vector<long> halfedge_twins(const std::vector<Face>& faces)
 {
+  // Halfedges bucketed by their source vertex (counting sort): each lookup
+  // scans one vertex's few outgoing halfedges, where a hash table of all
+  // directed edges cost a fifth of a million-face atlas.
   const std::size_t H = 3 * faces.size();
   std::vector<long> twin(H, -1);
-  std::unordered_map<std::uint64_t, long> first; // directed edge → halfedge, −2 when repeated
-  first.reserve(H);
-  auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
+  std::size_t n = 0;
+  for(const Face& t : faces)
+    for(int v : t) n = (std::max)(n, std::size_t(v) + 1);
+  std::vector<std::size_t> first(n + 1, 0);
+  for(const Face& t : faces)
+    for(int v : t) ++first[std::size_t(v) + 1];
+  for(std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
+  std::vector<std::size_t> out(H), fill(first.begin(), first.end() - 1);
+  for(std::size_t h = 0; h < H; ++h) out[fill[std::size_t(faces[h / 3][h % 3])]++] = h;
+  auto head = [&faces](std::size_t h) { return faces[h / 3][(h % 3 + 1) % 3]; };
+  // The halfedges a → b: the one there is, or −2 when repeated, −1 when none.
+  auto find = [&](int a, int b) {
+    long found = -1;
+    for(std::size_t i = first[std::size_t(a)]; i < first[std::size_t(a) + 1]; ++i)
+      if(head(out[i]) == b) found = found == -1 ? long(out[i]) : -2;
+    return found;
+  };
   for(std::size_t h = 0; h < H; ++h) {
-    const Face& t = faces[h / 3];
-    auto ins = first.emplace(key(t[h % 3], t[(h % 3 + 1) % 3]), long(h));
-    if(!ins.second) ins.first->second = -2;
-  }
-  for(std::size_t h = 0; h < H; ++h) {
-    const Face& t = faces[h / 3];
-    const int a = t[h % 3], b = t[(h % 3 + 1) % 3];
-    auto self = first.find(key(a, b));
-    auto other = first.find(key(b, a));
-    if(self->second >= 0 && other != first.end() && other->second >= 0) twin[h] = other->second;
+    if(twin[h] != -1) continue;
+    const int a = faces[h / 3][h % 3], b = head(h);
+    if(find(a, b) < 0) continue; // a → b repeated
+    const long o = find(b, a);
+    if(o >= 0) { twin[h] = o; twin[std::size_t(o)] = long(h); }
   }
   return twin;
 }
