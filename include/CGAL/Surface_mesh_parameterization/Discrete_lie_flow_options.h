@@ -147,7 +147,13 @@ enum class Discrete_lie_flow_border
   AUTOMATIC, ///< detected from the initial map: circle, square, or else free
   CIRCLE,    ///< the circle through the initial boundary
   SQUARE,    ///< the axis-aligned square of the initial boundary, corners fixed
-  FREE       ///< the initial boundary polyline (e.g. from LSCM or ARAP)
+  FREE,      ///< the initial boundary polyline (e.g. from LSCM or ARAP)
+  /// No curve: the boundary vertices move as freely as the interior ones,
+  /// but one, which holds the map in place (certified mode only; the
+  /// others refuse it with `ERROR_WRONG_PARAMETER`). The default of
+  /// `Discrete_lie_flow_parameterizer_3` with `Two_vertices_parameterizer_3`
+  /// as second template argument, CGAL's free border.
+  FLOATING
 };
 
 /// \ingroup PkgDiscreteLieFlowOptions
@@ -222,7 +228,7 @@ inline const char* discrete_lie_flow_mode_name(Discrete_lie_flow_mode m)
 }
 
 /// \ingroup PkgDiscreteLieFlowOptions
-/// The name of a border as used in reports (`"automatic"`, `"circle"`, `"square"`, `"free"`).
+/// The name of a border as used in reports (`"automatic"`, `"circle"`, `"square"`, `"free"`, `"floating"`).
 inline const char* discrete_lie_flow_border_name(Discrete_lie_flow_border b)
 {
   switch(b) {
@@ -230,6 +236,7 @@ inline const char* discrete_lie_flow_border_name(Discrete_lie_flow_border b)
   case Discrete_lie_flow_border::CIRCLE: return "circle";
   case Discrete_lie_flow_border::SQUARE: return "square";
   case Discrete_lie_flow_border::FREE: return "free";
+  case Discrete_lie_flow_border::FLOATING: return "floating";
   }
   return "unknown";
 }

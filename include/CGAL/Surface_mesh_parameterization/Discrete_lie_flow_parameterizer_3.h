@@ -10,6 +10,7 @@
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/disk_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/loop_triangulation.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/mesh_properties.h>
 
 #include <CGAL/Surface_mesh_parameterization/Symmetric_barycentric_mapping_parameterizer_3.h>
@@ -123,6 +124,14 @@ template <class TriangleMesh, class Mesh>
 struct Initial_parameterizer_of<TriangleMesh, Two_vertices_parameterizer_3<Mesh>, true>
 { typedef LSCM_parameterizer_3<TriangleMesh, Two_vertices_parameterizer_3<Mesh> > type; };
 
+/// Whether `T` is `Two_vertices_parameterizer_3`: CGAL's LSCM with it pins
+/// two vertices and leaves the border free, so the drop-in lets the border
+/// float (`Discrete_lie_flow_border::FLOATING`) by default.
+template <class T>
+struct Is_two_vertices_parameterizer : std::false_type {};
+template <class Mesh>
+struct Is_two_vertices_parameterizer<Two_vertices_parameterizer_3<Mesh> > : std::true_type {};
+
 /// The key and value types of a property map, `void` for what is not one
 /// (so that a wrongly bound argument gives one readable `static_assert`).
 template <class Map, class = void>
@@ -169,7 +178,10 @@ struct Always_false : std::false_type {};
 /// with a fan of virtual triangles around a virtual vertex (their targets:
 /// the fan's 3D area). The start keeps the initial parameterizer's map when
 /// it is fold-free and each hole's virtual vertex can be placed inside the
-/// hole's uv polygon (checked by the exact predicate); the package's Tutte
+/// hole's uv polygon: where a point sees the whole polygon, the fan around
+/// it, else, where the polygon is simple, its constrained Delaunay
+/// triangulation with the virtual vertex inside (checked by the exact
+/// predicate); the package's Tutte
 /// starts (`Symmetric_barycentric_mapping_parameterizer_3`), and any map
 /// that cannot be kept, start from Tutte's embedding of the filled disk
 /// inside the initial map's outer loop, or, when that folds (a non-convex
@@ -183,7 +195,9 @@ struct Always_false : std::false_type {};
 /// a CGAL border parameterizer, as CGAL's parameterizers take it (the start
 /// is then Tutte's map inside that border, or LSCM with
 /// `Two_vertices_parameterizer_3`), the constructor takes that border
-/// parameterizer, the calls of `Iterative_authalic_parameterizer_3` are
+/// parameterizer, with `Two_vertices_parameterizer_3` the border floats
+/// (CGAL's free border: `Discrete_lie_flow_border::FLOATING` unless the
+/// options name another), the calls of `Iterative_authalic_parameterizer_3` are
 /// offered, and every entry point returns a code of CGAL's `Error_code`
 /// (`discrete_lie_flow_cgal_error_code()`) with the precise one in `report()`.
 ///
@@ -196,7 +210,9 @@ struct Always_false : std::false_type {};
 ///   as `Circular_border_arc_length_parameterizer_3` or
 ///   `Square_border_uniform_parameterizer_3`): the initial map is then
 ///   `Symmetric_barycentric_mapping_parameterizer_3` with that border, or
-///   `LSCM_parameterizer_3` with `Two_vertices_parameterizer_3` (a free border).
+///   `LSCM_parameterizer_3` with `Two_vertices_parameterizer_3` (a free
+///   border: in certified mode the border then floats unless
+///   `Discrete_lie_flow_disk_options::border` names another).
 ///   Default: Tutte on the circle by arc length (`Symmetric_barycentric_mapping_parameterizer_3`).
 ///   With that parameterizer (on the circle by arc length, any solver), a
 ///   disk and the certified mode, the flow computes the same map itself,
@@ -563,13 +579,19 @@ private:
       if(code != OK) return fail(code, "initial map: " + start);
       R.seconds_initial += std::chrono::duration<double>(Clock::now() - t1).count();
     }
+    // CGAL's free border (LSCM pinned at two vertices): the border floats,
+    // it moves as freely as the interior (boundary_curve.h).
+    Discrete_lie_flow_options options = m_options;
+    if(options.disk.border == Discrete_lie_flow_border::AUTOMATIC && options.mode == Discrete_lie_flow_mode::CERTIFIED &&
+       D::Is_two_vertices_parameterizer<InitialParameterizer_>::value)
+      options.disk.border = Discrete_lie_flow_border::FLOATING;
     R.initial_uv.assign(uv.begin(), uv.begin() + std::ptrdiff_t(vertex_of.size()));
-    code = D::flow_disk(P, uv, m_options, m_solver_traits.solver(), R, tutte.get());
+    code = D::flow_disk(P, uv, options, m_solver_traits.solver(), R, tutte.get());
     if(code != OK) {
-      if(int(code) == int(ERROR_INITIAL_MAP_FOLDED) && P.fill_faces > 0) R.message += " (the start on the disk with filled holes: " + start + ")";
+      if(int(code) == int(ERROR_INITIAL_MAP_FOLDED) && P.holes > 0) R.message += " (the start on the disk with filled holes: " + start + ")";
       return code;
     }
-    if(P.fill_faces > 0)
+    if(P.holes > 0)
       R.message = (R.converged() ? std::string("Success") : R.message) + "; " + std::to_string(P.holes) + (P.holes == 1 ? " hole" : " holes") +
                   " filled for the flow and left free; initial map: " + start;
     for(std::size_t i = 0; i < vertex_of.size(); ++i) put(uvmap, vertex_of[i], Point_2(uv[i][0], uv[i][1]));
@@ -641,28 +663,42 @@ private:
     return oc.degenerate == 0 && (oc.inverted == 0 || oc.inverted == P.faces.size());
   }
 
-  // Places each hole's virtual vertex inside the kernel of its uv polygon
-  // (the points that see every loop edge from the fill's side): the kernel
-  // is clipped from the loop's bounding box edge by edge, and its vertex
-  // mean taken. False, with `why`, when a hole has an empty kernel.
-  static bool place_hole_vertices(const internal::dlf::Disk_problem& P, std::vector<internal::dlf::Vec2>& uv, std::string& why)
+  // The caller's orientation in `uv`: the sign of the signed area of its faces.
+  static double caller_sign(const internal::dlf::Disk_problem& P, const std::vector<internal::dlf::Vec2>& uv)
   {
     namespace D = internal::dlf;
-    // The caller's orientation: the sign of the signed area of its faces.
     double twice_area = 0;
     for(std::size_t f = 0; f < P.caller_faces(); ++f) {
       const D::Vec2 &a = uv[std::size_t(P.faces[f][0])], &b = uv[std::size_t(P.faces[f][1])], &c = uv[std::size_t(P.faces[f][2])];
       twice_area += (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
     }
-    const double sign = twice_area < 0 ? -1 : 1;
-    // Fill faces (a, b, c) come hole by hole, c the hole's virtual vertex.
+    return twice_area < 0 ? -1 : 1;
+  }
+
+  // Places each hole's virtual vertex inside the kernel of its uv polygon
+  // (the points that see every loop edge from the fill's side): the kernel
+  // is clipped from the loop's bounding box edge by edge, and its vertex
+  // mean taken. A hole whose kernel is empty (no point sees the whole
+  // polygon) is filled instead by the constrained Delaunay triangulation of
+  // its polygon with the virtual vertex inside (as many faces as the fan;
+  // their targets share the fan's by uv area). False, with `why`, when a
+  // polygon is not simple either.
+  static bool place_hole_vertices(internal::dlf::Disk_problem& P, std::vector<internal::dlf::Vec2>& uv, std::string& why)
+  {
+    namespace D = internal::dlf;
+    const double sign = caller_sign(P, uv);
+    // Fill faces (a, b, c) come hole by hole, c the hole's virtual vertex, as
+    // gathered; a fill replaced below is behind the walk.
     std::size_t f = P.caller_faces();
     while(f < P.faces.size()) {
       const int c = P.faces[f][2];
+      const std::size_t first = f;
       std::vector<std::array<D::Vec2, 2> > edges; // oriented so that the kernel is on their left
+      std::vector<int> loop;
       D::Vec2 lo = uv[std::size_t(P.faces[f][0])], hi = lo;
       for(; f < P.faces.size() && P.faces[f][2] == c; ++f) {
         const D::Vec2 &a = uv[std::size_t(P.faces[f][0])], &b = uv[std::size_t(P.faces[f][1])];
+        loop.push_back(P.faces[f][0]);
         edges.push_back(sign > 0 ? std::array<D::Vec2, 2>{{ a, b }} : std::array<D::Vec2, 2>{{ b, a }});
         for(int k = 0; k < 2; ++k) { lo[std::size_t(k)] = (std::min)(lo[std::size_t(k)], a[std::size_t(k)]); hi[std::size_t(k)] = (std::max)(hi[std::size_t(k)], a[std::size_t(k)]); }
       }
@@ -684,13 +720,32 @@ private:
         kernel.swap(clipped);
         if(kernel.empty()) break;
       }
-      if(kernel.size() < 3) {
-        why = "a hole's uv polygon (" + std::to_string(edges.size()) + " edges) is not star-shaped: no point inside sees all of it";
+      if(kernel.size() >= 3) {
+        D::Vec2 m{{ 0, 0 }};
+        for(const D::Vec2& p : kernel) { m[0] += p[0] / double(kernel.size()); m[1] += p[1] / double(kernel.size()); }
+        uv[std::size_t(c)] = m;
+        continue;
+      }
+      std::vector<D::Face> fill;
+      D::Vec2 at;
+      if(!D::triangulate_hole(uv, loop, c, sign, fill, at)) {
+        why = "a hole's uv polygon (" + std::to_string(edges.size()) + " edges) is not simple";
         return false;
       }
-      D::Vec2 m{{ 0, 0 }};
-      for(const D::Vec2& p : kernel) { m[0] += p[0] / double(kernel.size()); m[1] += p[1] / double(kernel.size()); }
-      uv[std::size_t(c)] = m;
+      uv[std::size_t(c)] = at;
+      double target = 0, area = 0;
+      std::vector<double> areas;
+      for(std::size_t g = first; g < f; ++g) target += P.target[g];
+      for(const D::Face& t : fill) {
+        const D::Vec2 &a = uv[std::size_t(t[0])], &b = uv[std::size_t(t[1])], &d = uv[std::size_t(t[2])];
+        areas.push_back(std::abs((b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0])));
+        area += areas.back();
+      }
+      if(!(area > 0)) { why = "a hole's uv polygon has no area"; return false; }
+      for(std::size_t k = 0; k < fill.size(); ++k) {
+        P.faces[first + k] = fill[k];
+        P.target[first + k] = target * areas[k] / area;
+      }
     }
     return true;
   }

@@ -143,7 +143,7 @@ struct Discrete_lie_flow_report
   /// the library's start inside the initial parameterizer's outer loop);
   /// empty when the initial map failed.
   std::vector<std::array<double, 2> > initial_uv;
-  /// The disk: the border the flow used (circle, square or free).
+  /// The disk: the border the flow used (circle, square, free or floating).
   Discrete_lie_flow_border border = Discrete_lie_flow_border::AUTOMATIC;
   /// The sphere, paper mode: edges of `domain_faces` left non-Delaunay (0
   /// except with flips off, or when the last flips were undone because they

@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The fixed curve that boundary vertices slide on (circle, square with fixed
-// corners, or a free polyline), parameterised by arc length counter-clockwise.
+// corners, or a free polyline), parameterised by arc length counter-clockwise;
+// a floating border has none (its vertices move as the interior's).
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_BOUNDARY_CURVE_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_BOUNDARY_CURVE_H
@@ -30,10 +31,14 @@ public:
   /// `kind` AUTOMATIC detects a circle or an axis-aligned square.
   Boundary_curve(const std::vector<Vec2>& pts, Kind kind)
   {
+    // A floating border is no curve: its vertices move freely (planar_dofs.h);
+    // the polyline through them is kept for what asks the curve.
+    const bool floating = kind == Kind::FLOATING;
+    if(floating) kind = Kind::FREE;
     if(kind == Kind::AUTOMATIC)
       kind = fits_square(pts) ? Kind::SQUARE : (fits_circle(pts) ? Kind::CIRCLE : Kind::FREE);
     if(kind == Kind::CIRCLE && !fit_circle(pts, m_center, m_radius)) kind = Kind::FREE;
-    m_kind = kind;
+    m_kind = floating ? Kind::FLOATING : kind;
     const std::size_t n = pts.size();
     if(kind == Kind::CIRCLE) {
       m_length = 2 * M_PI * m_radius;

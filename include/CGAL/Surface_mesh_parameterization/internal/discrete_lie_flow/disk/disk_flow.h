@@ -96,6 +96,9 @@ Error_code flow_disk(Disk_problem& P, std::vector<Vec2>& uv, const Discrete_lie_
     return report_failure(R, ERROR_NO_TOPOLOGICAL_DISC, std::string("the ") + discrete_lie_flow_mode_name(opt.mode) +
                           " mode takes disks only (the mesh has " +
                           std::to_string(P.holes) + (P.holes == 1 ? " hole" : " holes") + "); the certified mode fills them");
+  if(opt.disk.border == Discrete_lie_flow_border::FLOATING && opt.mode != Discrete_lie_flow_mode::CERTIFIED)
+    return report_failure(R, ERROR_WRONG_PARAMETER, std::string("a floating border takes the certified mode, not the ") +
+                          discrete_lie_flow_mode_name(opt.mode));
   std::vector<Vec2> loop;
   const Error_code oriented = orient_to_initial_map(P, uv, loop, R);
   if(oriented != OK) return oriented;

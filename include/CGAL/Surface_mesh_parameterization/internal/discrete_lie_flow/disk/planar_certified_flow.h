@@ -318,7 +318,8 @@ private:
     if(m_around.first.size() != m_n + 1) {
       m_around = Vertex_faces(m_n, m_P.faces);
       m_movable.assign(m_n, 1);
-      for(int b : m_P.boundary) m_movable[std::size_t(b)] = 0;
+      for(std::size_t v = 0; v < m_n; ++v) // a floating border's vertices too
+        if(m_dofs.boundary_of[v] >= 0) m_movable[v] = 0;
       if(m_P.faces.size() >= m_settings.parallel_sweeps_from)
         m_partition = Sweep_partition(morton_order(m_P.xyz), m_P.faces, m_settings.sweep_parts, &m_movable);
     }

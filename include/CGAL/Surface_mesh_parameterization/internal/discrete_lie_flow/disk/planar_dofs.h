@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The degrees of freedom of the planar flows (interior vertices move freely,
-// boundary vertices slide along the boundary curve), the trial move along a
+// boundary vertices slide along the boundary curve or, floating, move freely), the trial move along a
 // dof direction, the vertex velocities, and the gradient of a per-face
 // energy with respect to the positions.
 
@@ -42,7 +42,10 @@ inline void planar_position_gradient(const std::vector<Vec2>& uv, const std::vec
 
 /// The degrees of freedom of the planar flows: interior vertices move freely
 /// (two dofs), boundary vertices slide along the curve (one dof, along the
-/// tangent), fixed corners do not move.
+/// tangent), fixed corners do not move. A floating border's vertices move
+/// freely too, but its first one, which holds the map in place (the
+/// energy does not see translations, and the Sobolev metric needs one
+/// fixed vertex to be definite): it is then the only "boundary" vertex.
 struct Planar_dofs
 {
   std::vector<int> first;       ///< first dof of each vertex (−1: none)
@@ -53,10 +56,13 @@ struct Planar_dofs
   Planar_dofs(std::size_t n, const std::vector<int>& boundary, const Boundary_curve& curve)
     : first(n, -1), count(n, 2), boundary_of(n, -1)
   {
-    for(std::size_t k = 0; k < boundary.size(); ++k) {
-      boundary_of[boundary[k]] = int(k);
-      count[boundary[k]] = curve.is_fixed(k) ? 0 : 1;
-    }
+    if(curve.kind() == Discrete_lie_flow_border::FLOATING) {
+      if(!boundary.empty()) { boundary_of[std::size_t(boundary[0])] = 0; count[std::size_t(boundary[0])] = 0; }
+    } else
+      for(std::size_t k = 0; k < boundary.size(); ++k) {
+        boundary_of[boundary[k]] = int(k);
+        count[boundary[k]] = curve.is_fixed(k) ? 0 : 1;
+      }
     for(std::size_t v = 0; v < n; ++v)
       if(count[v] > 0) { first[v] = size; size += count[v]; }
   }

@@ -6,8 +6,9 @@
 // is as long as its stiffest face allows; with a density, a few stiff faces
 // far from the region cap every step while the region's deficit shrinks by
 // 0.01% per iteration (mushroom.off, factor 16). One vertex at a time, each
-// face only limits its own corners. Interior vertices only: boundary
-// vertices keep to their curve through the global steps.
+// face only limits its own corners. Interior vertices (and a floating
+// border's) only: boundary vertices keep to their curve through the global
+// steps.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_PLANAR_RELAXATION_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_PLANAR_RELAXATION_H
