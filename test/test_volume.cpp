@@ -432,7 +432,16 @@ TEST(Volume, MeditReaderNamesTheLineOfAnError)
   EXPECT_TRUE(medit_error("Dimension 2\n", e));
   EXPECT_NE(e.find("line 1: Dimension 2"), std::string::npos) << e;
   EXPECT_TRUE(medit_error(head + "Tetrahedra\n2\n1 2 3 4 1\n", e));
+  EXPECT_EQ(e, "line 9: the file announces 2 tetrahedra, more than the 5 numbers left in it can hold");
+  EXPECT_TRUE(medit_error("MeshVersionFormatted\n", e));
   EXPECT_NE(e.find("unexpected end of file"), std::string::npos) << e;
+  // Counts beyond the file are refused before anything is allocated (a
+  // 10^9-vertex header took gigabytes), and a skipped section's count
+  // cannot overflow.
+  EXPECT_TRUE(medit_error("MeshVersionFormatted 1\nDimension 3\nVertices\n1000000000\n0 0 0 1\n", e));
+  EXPECT_EQ(e, "line 3: the file announces 1000000000 vertices, more than the 4 numbers left in it can hold");
+  EXPECT_TRUE(medit_error(head + "Hexahedra\n4611686018427387904\n1\n", e));
+  EXPECT_EQ(e, "line 9: the file announces 4611686018427387904 Hexahedra, more than the 1 numbers left in it can hold");
   // A good file with skipped sections and a comment, then a round trip.
   std::istringstream in(head + "# a comment\nCorners\n1\n1\nTriangles\n1\n1 2 3 7\nTetrahedra\n1\n1 2 3 4 3\nEnd\n");
   D::Medit_tet_mesh m;

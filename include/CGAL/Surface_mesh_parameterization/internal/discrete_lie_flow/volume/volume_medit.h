@@ -77,6 +77,15 @@ inline bool read_medit(std::istream& in, Medit_tet_mesh& mesh, std::string& erro
     ++p;
     return true;
   };
+  // A section's count is checked against the numbers left in the file
+  // before anything is allocated (a short file announcing 10^9 vertices
+  // would otherwise take gigabytes: a finding of the fuzzing target).
+  auto fits = [&](std::size_t kp, long long n, long long per_record, const std::string& what) {
+    const long long left = (long long)(tokens.size() - p);
+    if(n <= left / per_record) return true;
+    return fail(kp, "the file announces " + std::to_string(n) + " " + what + ", more than the " +
+                      std::to_string(left) + " numbers left in it can hold");
+  };
   static const std::map<std::string, int> skipped = {
     { "Edges", 3 }, { "Triangles", 4 }, { "Quadrilaterals", 5 }, { "Hexahedra", 9 }, { "Prisms", 7 },
     { "Corners", 1 }, { "RequiredVertices", 1 }, { "Ridges", 1 }, { "RequiredEdges", 1 },
@@ -98,6 +107,7 @@ inline bool read_medit(std::istream& in, Medit_tet_mesh& mesh, std::string& erro
       if(have_vertices) return fail(kp, "a second Vertices section");
       if(!read_int(n, "the number of vertices")) return false;
       if(n < 0 || n > 2000000000LL) return fail(kp, "bad number of vertices " + std::to_string(n));
+      if(!fits(kp, n, 4, "vertices")) return false;
       mesh.points.resize(std::size_t(n));
       mesh.point_refs.resize(std::size_t(n));
       for(long long i = 0; i < n; ++i) {
@@ -115,6 +125,7 @@ inline bool read_medit(std::istream& in, Medit_tet_mesh& mesh, std::string& erro
       if(!have_vertices) return fail(kp, "Tetrahedra before Vertices");
       if(!read_int(n, "the number of tetrahedra")) return false;
       if(n < 0 || n > 2000000000LL) return fail(kp, "bad number of tetrahedra " + std::to_string(n));
+      if(!fits(kp, n, 5, "tetrahedra")) return false;
       mesh.tets.resize(std::size_t(n));
       mesh.tet_refs.resize(std::size_t(n));
       for(long long i = 0; i < n; ++i) {
@@ -140,6 +151,7 @@ inline bool read_medit(std::istream& in, Medit_tet_mesh& mesh, std::string& erro
       if(it == skipped.end()) return fail(kp, "unknown section '" + key + "'");
       if(!read_int(n, "the number of " + key)) return false;
       if(n < 0) return fail(kp, "bad number of " + key);
+      if(!fits(kp, n, it->second, key)) return false;
       for(long long i = 0; i < n * it->second; ++i) {
         double ignored;
         if(!read_double(ignored, "entry " + std::to_string(i / it->second + 1) + " of " + key)) return false;
