@@ -1626,7 +1626,7 @@ std::map<std::pair<int, int>, int> sphere_edge_faces(const std::vector<Tri>& fac
 }
 
 /// Options that send a data-set mesh through the coarse levels.
-SMP::Discrete_lie_flow_options sphere_coarse_to_fine_options(std::size_t faces = 2000)
+SMP::Discrete_lie_flow_options sphere_coarse_to_fine_options(std::size_t faces = 8000)
 {
   SMP::Discrete_lie_flow_options o;
   o.sphere.coarse_to_fine_faces = faces;

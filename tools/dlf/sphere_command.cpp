@@ -102,7 +102,7 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
     ("coarse-to-fine-faces", po::value<std::size_t>(&s.options.sphere.coarse_to_fine_faces)->value_name("N")
        ->default_value(s.options.sphere.coarse_to_fine_faces),
      "certified mode, Tutte or mean-value start: a mesh of N faces or more is mapped coarse to fine (coarser "
-     "meshes made by collapses mapped first, their map carried down; 0: never)")
+     "meshes made by collapses mapped first, their map carried down; 0: never, the default)")
     ("threads", po::value<int>(&s.options.sphere.threads)->value_name("N"),
      "threads of the certified flow's vertex sweeps on meshes of 50,000 vertices or more "
      "(default 0: the hardware threads, at most 8); the result is the same whatever the number")
