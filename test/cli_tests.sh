@@ -119,7 +119,7 @@ check "sphere: mean |log area ratio| <= the default 0.02" python3 -c \
 check "sphere report: the log-area tolerance" equals "$(json_get sph.json options log_area_tolerance)" 0.02
 # measure control on the sphere: a region's share of the sphere's area
 # Coarse to fine (the threshold lowered to reach the data set): the levels in the report and the summary.
-"$DLF" sphere "$MESHES/cow.off" --coarse-to-fine-faces 5000 -o sph_c2f.obj --report sph_c2f.json > sph_c2f.out
+"$DLF" sphere "$MESHES/homer.off" --coarse-to-fine-faces 8000 -o sph_c2f.obj --report sph_c2f.json > sph_c2f.out
 check "sphere coarse to fine: exit 0, converged, 0 inverted" equals \
   "$? $(json_get sph_c2f.json "" stop_reason) $(json_get sph_c2f.json final inverted_faces)" "0 converged 0"
 check "sphere coarse to fine: the levels grow to the mesh, the coarsest flowed, none refused" python3 -c "
