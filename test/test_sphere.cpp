@@ -1637,9 +1637,8 @@ SMP::Discrete_lie_flow_options sphere_coarse_to_fine_options(std::size_t faces =
 
 // Each level of homer's hierarchy: a closed manifold of genus 0 (every edge
 // on two faces, χ = 2, one face per oriented edge), the whole target area,
-// no two neighbours removed; then the coarsest level's own certified map
-// carried down level by level gives every finer face positive again (CGAL's
-// predicate), without any sweep.
+// no two neighbours removed; then the coarsest level's map carried down
+// level by level gives every finer face positive again (CGAL's predicate).
 TEST(Sphere_coarse_to_fine, LevelsKeepGenusZeroTheTargetsAndPositiveFaces)
 {
   const Index_mesh m = index_mesh(read_sphere_mesh("homer"));
@@ -1649,7 +1648,7 @@ TEST(Sphere_coarse_to_fine, LevelsKeepGenusZeroTheTargetsAndPositiveFaces)
   ASSERT_TRUE(D::validate_sphere_geometry(P, {}).ok());
   long double total = 0;
   for(double a : P.target) total += a;
-  const std::vector<D::Collapse_level> levels = D::build_sphere_levels(P, 500, D::Sphere_coarse_to_fine_settings());
+  const std::vector<D::Collapse_level> levels = D::build_sphere_levels(P, 1600, D::Sphere_coarse_to_fine_settings());
   ASSERT_GE(levels.size(), 4u);
   std::vector<Tri> faces = m.faces;
   for(const D::Collapse_level& L : levels) {
@@ -1675,7 +1674,30 @@ TEST(Sphere_coarse_to_fine, LevelsKeepGenusZeroTheTargetsAndPositiveFaces)
     EXPECT_NEAR(double(sum / total), 1.0, 1e-12) << at << "target area lost";
     faces = L.faces;
   }
-  // The coarsest level's own certified start, carried down.
+  // The coarsest level mapped (its own certified start, flowed), then
+  // carried down level by level: every finer face positive right after the
+  // removed vertices are put back, and again after the level's sweeps.
+  const SMP::Discrete_lie_flow_options opt;
+  const D::Sphere_coarse_to_fine_settings settings;
+  std::vector<V3> p(m.xyz.size(), V3{{ 0, 0, 0 }});
+  SMP::Discrete_lie_flow_level top;
+  ASSERT_TRUE(D::flow_coarsest_sphere_level<D::Default_spd_solver>(P, levels.back(), opt, settings, p, top));
+  EXPECT_EQ(top.faces, levels.back().faces.size());
+  EXPECT_LE(top.d_area, 2.01);
+  const std::vector<std::size_t> order = D::morton_order(m.xyz);
+  for(std::size_t l = levels.size(); l-- > 0;) {
+    const std::vector<Tri>& F = l == 0 ? m.faces : levels[l - 1].faces;
+    std::vector<V3> put_back = p;
+    ASSERT_TRUE(D::prolong_sphere_level(levels[l].from_above, m.xyz, put_back)) << "level " << l;
+    EXPECT_EQ(exact_sphere_signs(put_back, F).pos, F.size()) << "a face carried down to " << F.size() << " faces is not positive";
+    for(int v : levels[l].from_above.removed) EXPECT_NEAR(std::sqrt(D::dot(put_back[std::size_t(v)], put_back[std::size_t(v)])), 1., 1e-12);
+    const double d = D::carry_down_sphere_level(levels[l].from_above, F, l == 0 ? P.target : levels[l - 1].target, m.xyz, order, 1,
+                                                l == 0, opt, settings, p);
+    ASSERT_FALSE(std::isnan(d)) << "level " << l;
+    EXPECT_EQ(exact_sphere_signs(p, F).pos, F.size()) << "a face swept on " << F.size() << " faces is not positive";
+  }
+  // The coarsest level's own Tutte start, mirrored: no removed vertex has a
+  // positive star to go to.
   D::Sphere_problem C;
   std::vector<int> index(m.xyz.size(), -1), vertex_of;
   C.faces = levels.back().faces;
@@ -1687,15 +1709,6 @@ TEST(Sphere_coarse_to_fine, LevelsKeepGenusZeroTheTargetsAndPositiveFaces)
   C.target = levels.back().target;
   std::vector<V3> q;
   ASSERT_TRUE(D::certified_sphere_initial_map<D::Default_spd_solver>(C, q, false).certified);
-  std::vector<V3> p(m.xyz.size(), V3{{ 0, 0, 0 }});
-  for(std::size_t i = 0; i < vertex_of.size(); ++i) p[std::size_t(vertex_of[i])] = q[i];
-  for(std::size_t l = levels.size(); l-- > 0;) {
-    const std::vector<Tri>& F = l == 0 ? m.faces : levels[l - 1].faces;
-    ASSERT_TRUE(D::prolong_sphere_level(levels[l].from_above, m.xyz, p)) << "level " << l;
-    EXPECT_EQ(exact_sphere_signs(p, F).pos, F.size()) << "a face carried down to " << F.size() << " faces is not positive";
-    for(int v : levels[l].from_above.removed) EXPECT_NEAR(std::sqrt(D::dot(p[std::size_t(v)], p[std::size_t(v)])), 1., 1e-12);
-  }
-  // A coarse map mirrored: no removed vertex has a positive star to go to.
   std::vector<V3> mirrored(m.xyz.size(), V3{{ 0, 0, 0 }});
   for(std::size_t i = 0; i < vertex_of.size(); ++i) mirrored[std::size_t(vertex_of[i])] = {{ q[i][0], q[i][1], -q[i][2] }};
   EXPECT_FALSE(D::prolong_sphere_level(levels.back().from_above, m.xyz, mirrored));
@@ -1728,7 +1741,7 @@ TEST(Sphere_coarse_to_fine, MapMeetsTheGoalsOnAnyNumberOfThreads)
     EXPECT_LT(L.front().faces, m.faces.size() / 4);
     for(std::size_t k = 1; k < L.size(); ++k) {
       EXPECT_GT(L[k].faces, L[k - 1].faces);
-      EXPECT_EQ(L[k].faces + 2, 2 * L[k].vertices) << "a closed genus-0 level has F = 2V - 4";
+      EXPECT_EQ(L[k].faces + 4, 2 * L[k].vertices) << "a closed genus-0 level has F = 2V - 4";
       EXPECT_EQ(L[k].iterations, 0u);
       EXPECT_GE(L[k].d_area, 2.0);
     }
