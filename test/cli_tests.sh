@@ -118,6 +118,16 @@ check "sphere: mean |log area ratio| <= the default 0.02" python3 -c \
   "import json, sys; sys.exit(not json.load(open('sph.json'))['final']['log_area_ratio']['mean_abs'] <= 0.02)"
 check "sphere report: the log-area tolerance" equals "$(json_get sph.json options log_area_tolerance)" 0.02
 # measure control on the sphere: a region's share of the sphere's area
+# Coarse to fine (the threshold lowered to reach the data set): the levels in the report and the summary.
+"$DLF" sphere "$MESHES/homer.off" --coarse-to-fine-faces 8000 -o sph_c2f.obj --report sph_c2f.json > sph_c2f.out
+check "sphere coarse to fine: exit 0, converged, 0 inverted" equals \
+  "$? $(json_get sph_c2f.json "" stop_reason) $(json_get sph_c2f.json final inverted_faces)" "0 converged 0"
+check "sphere coarse to fine: the levels grow to the mesh, the coarsest flowed, none refused" python3 -c "
+import json; r = json.load(open('sph_c2f.json')); L = r['levels']
+assert len(L) >= 2 and L[-1]['faces'] == r['faces'] and L[0]['iterations'] > 0, L
+assert all(a['faces'] < b['faces'] for a, b in zip(L, L[1:])) and r['levels_refused'] is None, r['levels_refused']"
+check "sphere coarse to fine: the summary names the levels" grep -q "coarse to fine: " sph_c2f.out
+check "sphere by default: no levels" equals "$(python3 -c "import json; r = json.load(open('sph.json')); print(len(r['levels']), r['levels_refused'])")" "0 None"
 "$DLF" sphere "$MESHES/sphere.off" --roi-ball 0 0 1 0.8 --factor 4 -o sph_roi.obj --report sph_roi.json -q 2> sph_roi.err
 check "sphere --roi-ball: exit 0" equals "$?" 0
 check "sphere --roi-ball: no warning" equals "$(wc -c < sph_roi.err)" 0

@@ -21,6 +21,7 @@
 #include <CGAL/subdivision_method_3.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_sphere_3.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere/sphere_certified_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere/sphere_coarse_to_fine.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere/sphere_spherical_area.h>
 
 #include "../benchmark/irregular_meshes.h"
@@ -33,6 +34,7 @@
 #include <limits>
 #include <map>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -1606,6 +1608,169 @@ TEST(Sphere_start, GivenStartIsCertifiedAndUsed)
   SMP::Discrete_lie_flow_options o;
   o.sphere.start = SMP::Discrete_lie_flow_sphere_start::GIVEN;
   EXPECT_EQ(int(map_to_sphere(sm, second, o).status), int(SMP::ERROR_WRONG_PARAMETER));
+}
+
+// ---------------------------------------------------------------------------
+// Coarse to fine
+// ---------------------------------------------------------------------------
+
+namespace {
+
+/// The undirected edges of `faces` with the number of faces on each.
+std::map<std::pair<int, int>, int> sphere_edge_faces(const std::vector<Tri>& faces)
+{
+  std::map<std::pair<int, int>, int> e;
+  for(const Tri& t : faces)
+    for(int k = 0; k < 3; ++k) ++e[std::minmax(t[k], t[(k + 1) % 3])];
+  return e;
+}
+
+/// Options that send a data-set mesh through the coarse levels.
+SMP::Discrete_lie_flow_options sphere_coarse_to_fine_options(std::size_t faces = 8000)
+{
+  SMP::Discrete_lie_flow_options o;
+  o.sphere.coarse_to_fine_faces = faces;
+  return o;
+}
+
+} // namespace
+
+// Each level of homer's hierarchy: a closed manifold of genus 0 (every edge
+// on two faces, χ = 2, one face per oriented edge), the whole target area,
+// no two neighbours removed; then the coarsest level's map carried down
+// level by level gives every finer face positive again (CGAL's predicate).
+TEST(Sphere_coarse_to_fine, LevelsKeepGenusZeroTheTargetsAndPositiveFaces)
+{
+  const Index_mesh m = index_mesh(read_sphere_mesh("homer"));
+  D::Sphere_problem P;
+  P.xyz = m.xyz;
+  P.faces = m.faces;
+  ASSERT_TRUE(D::validate_sphere_geometry(P, {}).ok());
+  long double total = 0;
+  for(double a : P.target) total += a;
+  const std::vector<D::Collapse_level> levels = D::build_sphere_levels(P, 1600, D::Sphere_coarse_to_fine_settings());
+  ASSERT_GE(levels.size(), 4u);
+  std::vector<Tri> faces = m.faces;
+  for(const D::Collapse_level& L : levels) {
+    const std::string at = "level of " + std::to_string(L.faces.size()) + " faces: ";
+    const std::set<int> gone(L.from_above.removed.begin(), L.from_above.removed.end());
+    ASSERT_EQ(gone.size(), L.from_above.removed.size());
+    ASSERT_GT(gone.size(), 0u);
+    for(const auto& e : sphere_edge_faces(faces)) EXPECT_FALSE(gone.count(e.first.first) && gone.count(e.first.second)) << at << "neighbours removed";
+    std::set<int> used;
+    std::set<std::pair<int, int> > directed;
+    for(const Tri& t : L.faces) {
+      for(int k = 0; k < 3; ++k) {
+        ASSERT_EQ(gone.count(t[k]), 0u) << at << "a removed vertex is still used";
+        used.insert(t[k]);
+        EXPECT_TRUE(directed.insert(std::make_pair(t[k], t[(k + 1) % 3])).second) << at << "an oriented edge twice";
+      }
+    }
+    const std::map<std::pair<int, int>, int> e = sphere_edge_faces(L.faces);
+    for(const auto& x : e) EXPECT_EQ(x.second, 2) << at << "edge " << x.first.first << "-" << x.first.second;
+    EXPECT_EQ(long(used.size()) - long(e.size()) + long(L.faces.size()), 2) << at << "not genus 0";
+    long double sum = 0;
+    for(double a : L.target) { EXPECT_GT(a, 0); sum += a; }
+    EXPECT_NEAR(double(sum / total), 1.0, 1e-12) << at << "target area lost";
+    faces = L.faces;
+  }
+  // The coarsest level mapped (its own certified start, flowed), then
+  // carried down level by level: every finer face positive right after the
+  // removed vertices are put back, and again after the level's sweeps.
+  const SMP::Discrete_lie_flow_options opt;
+  const D::Sphere_coarse_to_fine_settings settings;
+  std::vector<V3> p(m.xyz.size(), V3{{ 0, 0, 0 }});
+  SMP::Discrete_lie_flow_level top;
+  ASSERT_TRUE(D::flow_coarsest_sphere_level<D::Default_spd_solver>(P, levels.back(), opt, settings, p, top));
+  EXPECT_EQ(top.faces, levels.back().faces.size());
+  EXPECT_LE(top.d_area, 2.01);
+  const std::vector<std::size_t> order = D::morton_order(m.xyz);
+  for(std::size_t l = levels.size(); l-- > 0;) {
+    const std::vector<Tri>& F = l == 0 ? m.faces : levels[l - 1].faces;
+    std::vector<V3> put_back = p;
+    ASSERT_TRUE(D::prolong_sphere_level(levels[l].from_above, m.xyz, put_back)) << "level " << l;
+    EXPECT_EQ(exact_sphere_signs(put_back, F).pos, F.size()) << "a face carried down to " << F.size() << " faces is not positive";
+    for(int v : levels[l].from_above.removed) EXPECT_NEAR(std::sqrt(D::dot(put_back[std::size_t(v)], put_back[std::size_t(v)])), 1., 1e-12);
+    const double d = D::carry_down_sphere_level(levels[l].from_above, F, l == 0 ? P.target : levels[l - 1].target, m.xyz, order, 1,
+                                                l == 0, opt, settings, p);
+    ASSERT_FALSE(std::isnan(d)) << "level " << l;
+    EXPECT_EQ(exact_sphere_signs(p, F).pos, F.size()) << "a face swept on " << F.size() << " faces is not positive";
+  }
+  // The coarsest level's own Tutte start, mirrored: no removed vertex has a
+  // positive star to go to.
+  D::Sphere_problem C;
+  std::vector<int> index(m.xyz.size(), -1), vertex_of;
+  C.faces = levels.back().faces;
+  for(Tri& t : C.faces)
+    for(int& v : t) {
+      if(index[std::size_t(v)] < 0) { index[std::size_t(v)] = int(vertex_of.size()); vertex_of.push_back(v); C.xyz.push_back(m.xyz[std::size_t(v)]); }
+      v = index[std::size_t(v)];
+    }
+  C.target = levels.back().target;
+  std::vector<V3> q;
+  ASSERT_TRUE(D::certified_sphere_initial_map<D::Default_spd_solver>(C, q, false).certified);
+  std::vector<V3> mirrored(m.xyz.size(), V3{{ 0, 0, 0 }});
+  for(std::size_t i = 0; i < vertex_of.size(); ++i) mirrored[std::size_t(vertex_of[i])] = {{ q[i][0], q[i][1], -q[i][2] }};
+  EXPECT_FALSE(D::prolong_sphere_level(levels.back().from_above, m.xyz, mirrored));
+}
+
+// The public entry point coarse to fine: the goals and the exact signs of
+// the caller's faces, the levels in the report (coarsest first, growing to
+// the caller's mesh, the coarsest flowed), and the same map on one and two
+// threads, to the last bit.
+TEST(Sphere_coarse_to_fine, MapMeetsTheGoalsOnAnyNumberOfThreads)
+{
+  const SM sm = read_sphere_mesh("homer");
+  const Index_mesh m = index_mesh(sm);
+  std::vector<std::vector<V3> > result;
+  for(int threads : { 1, 2 }) {
+    SMP::Discrete_lie_flow_options o = sphere_coarse_to_fine_options();
+    o.sphere.threads = threads;
+    std::vector<V3> p;
+    const SMP::Discrete_lie_flow_report r = map_to_sphere(sm, p, o);
+    ASSERT_EQ(r.status, SMP::OK) << r.message;
+    EXPECT_EQ(r.stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED);
+    EXPECT_EQ(exact_sphere_signs(p, m.faces).pos, m.faces.size());
+    const std::pair<double, double> d = sphere_d_area(m.xyz, p, m.faces);
+    EXPECT_LE(d.first, 2.01 + 1e-9);
+    EXPECT_LE(d.second, 0.02);
+    const auto& L = r.levels;
+    ASSERT_GE(L.size(), 3u) << "no coarse levels: " << r.levels_refused;
+    EXPECT_TRUE(r.levels_refused.empty()) << r.levels_refused;
+    EXPECT_GT(L.front().iterations, 0u);
+    EXPECT_LT(L.front().faces, m.faces.size() / 4);
+    for(std::size_t k = 1; k < L.size(); ++k) {
+      EXPECT_GT(L[k].faces, L[k - 1].faces);
+      EXPECT_EQ(L[k].faces + 4, 2 * L[k].vertices) << "a closed genus-0 level has F = 2V - 4";
+      EXPECT_EQ(L[k].iterations, 0u);
+      EXPECT_GE(L[k].d_area, 2.0);
+    }
+    EXPECT_EQ(L.back().faces, m.faces.size());
+    EXPECT_EQ(L.back().vertices, m.xyz.size());
+    EXPECT_NEAR(r.initial_d_area, L.back().d_area, 1e-9 * L.back().d_area) << "the flow did not start from the map carried down";
+    result.push_back(p);
+  }
+  EXPECT_TRUE(result[1] == result[0]) << "2 threads differ from 1";
+  // Off: no levels, the plain start.
+  std::vector<V3> p;
+  const SMP::Discrete_lie_flow_report plain = map_to_sphere(sm, p, sphere_coarse_to_fine_options(0));
+  ASSERT_EQ(plain.status, SMP::OK) << plain.message;
+  EXPECT_TRUE(plain.levels.empty());
+  EXPECT_GT(plain.initial_d_area, 100.);
+}
+
+// A tetrahedron has no coarser closed mesh: the levels are refused with
+// the reason, and the plain start maps it.
+TEST(Sphere_coarse_to_fine, RefusedWhenNoVertexCanGo)
+{
+  const SM sm = read_sphere_mesh("tetrahedron");
+  const Index_mesh m = index_mesh(sm);
+  std::vector<V3> p;
+  const SMP::Discrete_lie_flow_report r = map_to_sphere(sm, p, sphere_coarse_to_fine_options(1));
+  ASSERT_EQ(r.status, SMP::OK) << r.message;
+  EXPECT_TRUE(r.levels.empty());
+  EXPECT_NE(r.levels_refused.find("no vertex could be removed"), std::string::npos) << r.levels_refused;
+  EXPECT_EQ(exact_sphere_signs(p, m.faces).pos, m.faces.size());
 }
 
 } // namespace dlf_test_sphere

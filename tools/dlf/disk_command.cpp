@@ -145,12 +145,7 @@ json make_report(const Disk_settings& s, const Indexed_mesh& input, const Seam_c
   if(density.source != "none") j["density"]["share_error"] = R.final_share_error; // density_levels.h
   if(!density.regions.empty()) j["regions"] = regions_json(density, final_metrics != nullptr);
   if(s.history_in_report) j["history"] = history_json(R.history);
-  j["levels"] = json::array();
-  for(const SMP::Discrete_lie_flow_level& l : R.levels)
-    j["levels"].push_back({ { "vertices", l.vertices }, { "faces", l.faces }, { "iterations", l.iterations },
-                            { "d_area", l.d_area }, { "seconds", l.seconds } });
-  j["seconds"]["levels"] = R.seconds_levels;
-  j["levels_refused"] = R.levels_refused.empty() ? json(nullptr) : json(R.levels_refused);
+  add_levels_json(j, R);
   return j;
 }
 
@@ -178,18 +173,7 @@ void print_summary(std::ostream& out, const Disk_settings& s, const Indexed_mesh
         << "  initial map: " << s.init << " places the outer loop; the start is Tutte's embedding of the disk with "
            "its holes filled\n";
   }
-  if(!R.levels.empty()) {
-    double seconds = R.seconds_levels;
-    out << "  coarse to fine:";
-    for(std::size_t k = 0; k < R.levels.size(); ++k) {
-      seconds += R.levels[k].seconds;
-      if(k + 1 < R.levels.size()) out << (k ? ", " : " ") << R.levels[k].faces << " faces " << R.levels[k].iterations << " it";
-    }
-    out << "; start d_area " << R.levels.back().d_area << " (levels " << std::setprecision(3) << seconds << " s)\n"
-        << std::setprecision(8);
-  } else if(!R.levels_refused.empty()) {
-    out << "  coarse to fine refused (" << R.levels_refused << "): the flow ran from the start\n";
-  }
+  print_levels(out, R);
   out
       << "  iterations " << R.iterations << " (" << SMP::discrete_lie_flow_stop_reason_name(R.stop_reason) << ")\n";
   if(initial) {

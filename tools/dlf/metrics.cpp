@@ -3,6 +3,8 @@
 
 #include "metrics.h"
 
+#include <iomanip>
+
 namespace dlf_cli {
 
 Metrics compute_metrics(const Indexed_mesh& mesh, const std::vector<Vec2>& uv, const std::vector<double>& face_density)
@@ -45,6 +47,33 @@ void print_metrics(std::ostream& out, const Metrics& m, const std::string& inden
       << indent << "area_total           " << m.area_total << "  (optimum 0)\n"
       << indent << "|Beltrami|           mean " << m.beltrami_mean << ", area-weighted " << m.beltrami_weighted_mean
       << ", max " << m.beltrami_max << "  (optimum 0: conformal)\n";
+}
+
+void add_levels_json(nlohmann::ordered_json& j, const CGAL::Surface_mesh_parameterization::Discrete_lie_flow_report& R)
+{
+  j["levels"] = nlohmann::ordered_json::array();
+  for(const CGAL::Surface_mesh_parameterization::Discrete_lie_flow_level& l : R.levels)
+    j["levels"].push_back({ { "vertices", l.vertices }, { "faces", l.faces }, { "iterations", l.iterations },
+                            { "d_area", l.d_area }, { "seconds", l.seconds } });
+  j["seconds"]["levels"] = R.seconds_levels;
+  j["levels_refused"] = R.levels_refused.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(R.levels_refused);
+}
+
+void print_levels(std::ostream& out, const CGAL::Surface_mesh_parameterization::Discrete_lie_flow_report& R)
+{
+  if(!R.levels.empty()) {
+    const std::streamsize precision = out.precision();
+    double seconds = R.seconds_levels;
+    out << "  coarse to fine:";
+    for(std::size_t k = 0; k < R.levels.size(); ++k) {
+      seconds += R.levels[k].seconds;
+      if(k + 1 < R.levels.size()) out << (k ? ", " : " ") << R.levels[k].faces << " faces " << R.levels[k].iterations << " it";
+    }
+    out << "; start d_area " << R.levels.back().d_area << " (levels " << std::setprecision(3) << seconds << " s)\n"
+        << std::setprecision(int(precision));
+  } else if(!R.levels_refused.empty()) {
+    out << "  coarse to fine refused (" << R.levels_refused << "): the flow ran from the start\n";
+  }
 }
 
 } // namespace dlf_cli

@@ -10,6 +10,7 @@
 #include "mesh_input.h"
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_distortion.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
 
 #include <nlohmann/json.hpp>
 
@@ -30,6 +31,13 @@ nlohmann::ordered_json metrics_to_json(const Metrics& m);
 
 /// One metric a line, each prefixed by `indent`.
 void print_metrics(std::ostream& out, const Metrics& m, const std::string& indent);
+
+/// The coarse-to-fine levels of a disk or sphere run into `j`: `levels`,
+/// `seconds.levels` and `levels_refused`.
+void add_levels_json(nlohmann::ordered_json& j, const CGAL::Surface_mesh_parameterization::Discrete_lie_flow_report& R);
+
+/// The "coarse to fine:" line of the summary (nothing without levels or a refusal).
+void print_levels(std::ostream& out, const CGAL::Surface_mesh_parameterization::Discrete_lie_flow_report& R);
 
 } // namespace dlf_cli
 

@@ -99,6 +99,10 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
      "certified: never folds the input triangles; paper: the paper's flow with edge flips, stabilised "
      "(plateau and stall tests, best iterate); literal: Algorithm 1 as printed (step mu * min critical step, "
      "stop when ||h_M - h_Omega||^2 < --threshold; a collapse ends the run)")
+    ("coarse-to-fine-faces", po::value<std::size_t>(&s.options.sphere.coarse_to_fine_faces)->value_name("N")
+       ->default_value(s.options.sphere.coarse_to_fine_faces),
+     "certified mode, Tutte or mean-value start: a mesh of N faces or more is mapped coarse to fine (coarser "
+     "meshes made by collapses mapped first, their map carried down; 0: never, the default)")
     ("threads", po::value<int>(&s.options.sphere.threads)->value_name("N"),
      "threads of the certified flow's vertex sweeps on meshes of 50,000 vertices or more "
      "(default 0: the hardware threads, at most 8); the result is the same whatever the number")
@@ -334,6 +338,7 @@ json sphere_report(const Sphere_settings& s, const Indexed_mesh& input, const Sp
   j["puncture_face"] = R.puncture_face;
   j["split_vertices_removed"] = R.split_vertices_removed;
   j["coarse_iterations"] = R.coarse_iterations;
+  add_levels_json(j, R);
   j["rejected_by_exact_check"] = R.rejected_by_exact_check;
   if(s.history_in_report) {
     json h = json::array();
@@ -451,6 +456,7 @@ int sphere_command(const std::vector<std::string>& args)
               << input.faces.size() << " faces\n"
               << "  status " << run_status(status, R) << ": " << R.message << "\n";
     if(ok) {
+      print_levels(std::cout, R);
       std::cout << "  iterations " << R.iterations << " (" << SMP::discrete_lie_flow_stop_reason_name(R.stop_reason) << ")\n"
                 << "  d_area " << R.initial_metrics.d_area << " -> " << R.final_metrics.d_area << " (optimum 2)\n"
                 << "  inverted faces " << R.final_metrics.inverted_faces << "\n";

@@ -339,6 +339,14 @@ struct Discrete_lie_flow_sphere_options
   /// The initial map (`TUTTE` or `CONFORMAL`; a map of the caller's own is
   /// given with `set_initial_map()`).
   Discrete_lie_flow_sphere_start start = Discrete_lie_flow_sphere_start::TUTTE;
+  /// The certified mode (Tutte or mean-value start) maps a mesh of at least
+  /// this many faces coarse to fine (0, the default: never): coarser closed
+  /// meshes made by collapses that keep genus 0, the coarsest given its own
+  /// start and flowed, its map carried down level by level (exact predicate
+  /// at each), the caller's mesh flowed from there; the plain start when a
+  /// level's map is refused. Off by default: on the large meshes measured
+  /// it was slower than the plain flow (doc/sphere.md, "Coarse to fine").
+  std::size_t coarse_to_fine_faces = 0;
   /// Threads of the certified flow's vertex sweeps on meshes of 50,000
   /// vertices or more (smaller ones sweep on one): 0 the hardware threads
   /// (at most 8), else that many. The result is the same whatever the number.

@@ -171,15 +171,17 @@ struct Discrete_lie_flow_report
   std::size_t split_vertices_removed = 0;
   /// The sphere: iterations of the coarse mesh's flow (0 without a coarse start).
   std::size_t coarse_iterations = 0;
-  /// The disk, certified mode: the coarse-to-fine flow's levels, coarsest
-  /// first, the last one the caller's mesh with the map carried down to it
-  /// (empty when the flow ran on the mesh alone,
-  /// `Discrete_lie_flow_disk_options::coarse_to_fine_faces`). `iterations`
+  /// The disk and the sphere, certified mode: the coarse-to-fine flow's
+  /// levels, coarsest first, the last one the caller's mesh with the map
+  /// carried down to it (empty when the flow ran on the mesh alone,
+  /// `Discrete_lie_flow_disk_options::coarse_to_fine_faces`,
+  /// `Discrete_lie_flow_sphere_options::coarse_to_fine_faces`). `iterations`
   /// and the history are the finest level's flow, from that map.
   std::vector<Discrete_lie_flow_level> levels;
-  /// The disk: the time the coarse levels took to build (within `seconds_flow`).
+  /// The time the coarse levels took to build (the disk: within
+  /// `seconds_flow`; the sphere: within `seconds_initial`).
   double seconds_levels = 0;
-  /// The disk: why the coarse levels' map was not taken as the start (empty when it was, or when there were none).
+  /// Why the coarse levels' map was not taken as the start (empty when it was, or when there were none).
   std::string levels_refused;
 };
 

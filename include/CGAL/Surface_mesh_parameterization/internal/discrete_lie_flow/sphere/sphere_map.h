@@ -17,6 +17,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow/flow_driver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere/sphere_literal_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere/sphere_certified_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere/sphere_coarse_to_fine.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere/sphere_initial_map.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere/sphere_paper_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere/sphere_problem.h>
@@ -91,7 +92,12 @@ Error_code start_sphere(Sphere_problem& P, std::vector<Vec3>& p, const Discrete_
     // The certified flow opens a less compressed start in fewer steps; the
     // paper's modes keep the plain Tutte start they are measured from.
     const bool conformal = opt.sphere.start == Discrete_lie_flow_sphere_start::CONFORMAL;
-    if(!(opt.mode == Discrete_lie_flow_mode::CERTIFIED && !conformal && coarse_sphere_start<EigenSolver>(P, p, opt, R))) {
+    // Edge-split vertices first (their coarse mesh is the one they were
+    // made from), then the levels of a large mesh; the plain start when
+    // neither applies or a level's map is refused.
+    const bool certified = opt.mode == Discrete_lie_flow_mode::CERTIFIED && !conformal;
+    if(!(certified && coarse_sphere_start<EigenSolver>(P, p, opt, R)) &&
+       !(sphere_flows_coarse_to_fine(opt, P.faces.size()) && sphere_coarse_to_fine_start<EigenSolver>(P, p, opt, R))) {
       const Sphere_initial_outcome init = certified_sphere_initial_map<EigenSolver>(
         P, p, conformal, 3, true, false, opt.mode == Discrete_lie_flow_mode::CERTIFIED,
         opt.sphere.start == Discrete_lie_flow_sphere_start::MEAN_VALUE);
