@@ -552,6 +552,21 @@ expect_error "genus 3 with holes" 1 "not a disk: genus 3 with 106 border loops (
 # Two triangles joined at one vertex (a bow tie): one face each side, but two fans at the vertex.
 printf 'OFF\n5 2 0\n0 0 0\n1 0 0\n0 1 0\n-1 0 0\n0 -1 0\n3 0 1 2\n3 0 3 4\n' > bowtie_disk.off
 expect_error "two fans at a vertex (not manifold)" 1 "the mesh is not manifold .*; 'dlf atlas' splits" disk bowtie_disk.off
+# The reader's refusals, each with its own message: a face that repeats a
+# vertex (whichever two corners), an index one past the last vertex, counts
+# the file cannot hold, a vertex of no face.
+printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 1 3 1\n' > repeat_last.off
+expect_error "reader: a face whose third corner repeats its first" 1 "face 1 uses vertex 1 twice" disk repeat_last.off
+printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 2 1 3\n' > repeat_none.off
+printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 2 1 4\n' > index_past_end.off
+expect_error "reader: a face index equal to the vertex count" 1 "cannot read as a mesh" disk index_past_end.off
+printf 'OFF\n2000000 1000000 0\n0 0 0\n' > huge_header.off
+expect_error "reader: counts the file cannot hold, refused before reading" 1 \
+  "the header announces 2000000 vertices and 1000000 faces, more than the file's [0-9]* bytes can hold" disk huge_header.off
+printf 'OFF\n5 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n5 5 5\n3 0 1 2\n3 2 1 3\n' > unused_vertex.off
+expect_error "reader: a vertex of no face" 1 "1 vertex is not used by any face (first: vertex 4); remove them first" disk unused_vertex.off
+"$DLF" disk repeat_none.off -o repeat_none.obj -q
+check "reader: the same mesh without the repeat is read and mapped" equals "$?" 0
 # A hexagon fan, once plain, once with signs, exponents, comments, colours
 # and one face reversed (oriented on reading): the same map.
 printf 'OFF\n7 6 0\n0 0 0\n1 0 0\n0.5 0.866 0\n-0.5 0.866 0\n-1 0 0\n-0.5 -0.866 0\n0.5 -0.866 0\n3 0 1 2\n3 0 2 3\n3 0 3 4\n3 0 4 5\n3 0 5 6\n3 0 6 1\n' > hexagon.off

@@ -294,6 +294,8 @@ def test_wrong_types_raise_type_error(V, F, message):
 @pytest.mark.parametrize("V, F, message", [
     (np.zeros((3, 2)), [[0, 1, 2]], r"V must have shape \(n, 3\), got \(3, 2\)"),
     ([[0, 0, 0], [1, 0]], [[0, 1, 2]], "V must be an array"),
+    (np.eye(3), [[0, 1, 2, 0]], r"F must have shape \(m, 3\), got \(1, 4\)"),
+    (np.eye(3), [0, 1, 2], r"F must have shape \(m, 3\), got \(3,\)"),
     (np.eye(3), [[0, 1, 3]], "F: face 0 refers to vertex 3 of 3"),
     (np.eye(3), [[0, -1, 2]], "F: face 0 refers to vertex -1 of 3"),
     (np.eye(3), [[0, 1, 1]], "face 0 uses vertex 1 twice"),
