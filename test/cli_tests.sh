@@ -904,6 +904,10 @@ check "volume --cholesky-every 1: converged, one conjugate-gradient step per ite
 "$DLF" volume vol_sphere.mesh --max-iterations 2 --tolerance 1e-9 --report vol_cap.json -q 2> vol_cap.err
 check "volume stopped after 2 iterations: exit 3 and status not_converged, as disk and sphere" equals \
   "$? $(json_get vol_cap.json "" status) $(json_get vol_cap.json "" stop_reason)" "3 not_converged iteration_cap"
+check "volume stopped short: the warning names the goal it missed, D_vol against 2 + tolerance, with its value" \
+  grep -Eq '^dlf: warning: not converged: stopped \(iteration_cap\) after 2 iterations short of D_vol [0-9.e+-]+ > 2[;.]' vol_cap.err
+check "volume stopped short: the report's message is the warning's" \
+  grep -Fq "$(json_get vol_cap.json "" message)" vol_cap.err
 "$DLF" volume vol_sphere.mesh --mode paper -o vol_paper.mesh --report vol_paper.json -q
 check "volume --mode paper: status ok, 0 inverted tets, the mode reported, no conjugate gradients" equals \
   "$(json_get vol_paper.json "" status) $(json_get vol_paper.json final inverted_tets) $(json_get vol_paper.json options mode) $(json_get vol_paper.json counters cg_iterations)" \

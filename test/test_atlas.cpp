@@ -217,6 +217,28 @@ TEST(Atlas, EveryComponentOneChartAndTheGutterKept)
   EXPECT_EQ(r.seam_length, 0.); // disks and holes are not cut
 }
 
+// Charts whose flows stop short: a valid atlas, and a message that says
+// how many and names the first one's missed goal with its value.
+TEST(Atlas, NotConvergedMessageNamesTheChartsAndTheMissedGoal)
+{
+  Mesh m = load("blobby_3cc");
+  UV_map uv = uv_map(m);
+  SMP::Discrete_lie_flow_atlas_options o;
+  o.flow.max_iterations = 1;
+  o.flow.tolerance = 1e-9;
+  o.max_split_depth = 0;
+  o.max_border_peels = 0;
+  const SMP::Discrete_lie_flow_atlas_report r = SMP::discrete_lie_flow_atlas(m, uv, o);
+  ASSERT_EQ(r.code, SMP::OK) << r.message;
+  ASSERT_FALSE(r.converged());
+  EXPECT_TRUE(r.valid());
+  const std::string head = "not converged: " + std::to_string(r.unconverged_charts) + " of " + std::to_string(r.charts) +
+                           " charts stopped short of their goals (a valid atlas still); the first, chart ";
+  EXPECT_EQ(r.message.rfind(head, 0), 0u) << r.message;
+  EXPECT_NE(r.message.find("short of d_area "), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("; the map is fold-free"), std::string::npos) << r.message;
+}
+
 TEST(Atlas, DensityGetsItsShare)
 {
   // Faces on one side of a plane get density 4: their uv area is 4 times
