@@ -9,6 +9,7 @@
 #   bash test/mutation.sh --wing sphere    # only one wing's mutations
 #   bash test/mutation.sh --list           # the mutations, numbered, and nothing else
 #   bash test/mutation.sh --check          # only whether each text occurs exactly once
+#   bash test/mutation.sh --sample KEY N   # N mutations picked by KEY (CI: the commit), see below
 #
 #   MUTATION_DIR   scratch directory (default: a new mktemp -d, removed at
 #                  the end); an existing one is reused, build included
@@ -33,6 +34,17 @@
 # through ccache when it is installed, so that a mutation recompiles one
 # translation unit and the restored file's dependents are cache hits.
 # Exit 0 only when every selected mutation applied and was caught.
+#
+# --sample KEY N (what `.ci/mutations` runs after `.ci/test`): N mutations
+# among the cheap ones, picked by a hash of KEY and spread over the list,
+# so that successive commits rotate through them. Cheap: a header
+# mutation (one test file compiled, mutated, in the scratch build) or a
+# mutation of the Python package's .py (no compilation: a copy of the
+# package of the already built tree, SAMPLE_BUILD, default <repo>/build,
+# with that tree's `dlf`). No baseline: the suite of that build has just
+# passed on the unmutated tree. The tool's, the reader's and the bindings'
+# mutations need the tool's 25 translation units compiled in the scratch
+# build, beyond a CI budget: they run in the full table only.
 set -euo pipefail
 REPO=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 DATA_DIR=${DLF_DATA_DIR:-$REPO/build/data}
@@ -114,6 +126,7 @@ unescape() { printf '%b' "$(sed 's/\\&/\&/g' <<< "$1")"; }
 
 selected=()
 wing=""
+sample=0
 while (($#)); do
   case $1 in
     --list) for i in $(seq 1 ${#MUTATIONS[@]}); do printf '%2d %-7s %s\n' "$i" "$(field $i 1)" "$(field $i 2)"; done; exit 0 ;;
@@ -125,10 +138,23 @@ while (($#)); do
         [[ "$n" == 1 ]] || { echo "mutation $i: the text occurs $n times in $(field $i 3)"; bad=1; }
       done
       exit $bad ;;
+    --sample)
+      sample=1
+      eligible=()
+      for i in $(seq 1 ${#MUTATIONS[@]}); do
+        r=$(field $i 6) f=$(field $i 3)
+        [[ "$r" == gtest* || ( "$r" == pytest* && "$f" == *.py ) ]] && eligible+=("$i")
+      done
+      h=$(( 16#$(printf '%s' "$2" | sha1sum | cut -c1-7) ))
+      for ((k = 0; k < $3; ++k)); do
+        selected+=("${eligible[$(( (h + k * (${#eligible[@]} / $3)) % ${#eligible[@]} ))]}")
+      done
+      shift 2 ;;
     *) selected+=("$1") ;;
   esac
   shift
 done
+SAMPLE_BUILD=${SAMPLE_BUILD:-$REPO/build}
 if ((${#selected[@]} == 0)); then
   for i in $(seq 1 ${#MUTATIONS[@]}); do [[ -z "$wing" || "$(field $i 1)" == "$wing" ]] && selected+=("$i"); done
 fi
@@ -154,12 +180,20 @@ mkdir -p "$SCRATCH/fresh"; rm -rf "$SCRATCH/fresh"/*; tar -xf "$SCRATCH/tree.tar
 done
 rm -rf "$SCRATCH/fresh" "$SCRATCH/tree.tar"
 
+needs_build=1
+if ((sample)); then
+  needs_build=0
+  for i in "${selected[@]}"; do [[ "$(field $i 3)" == *.py ]] || needs_build=1; done
+  if ((!needs_build)) && [[ ! -x "$SAMPLE_BUILD/tools/dlf" || ! -d "$SAMPLE_BUILD/python/discrete_lie_flow" ]]; then
+    echo "mutation: --sample needs a built tree in $SAMPLE_BUILD (dlf and the Python module)"; exit 1
+  fi
+fi
 launcher=()
 command -v ccache > /dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 # -O1: a rebuild per mutation, so compile time matters more than run time.
 # No `dlf tetrahedralize` (CGAL's Mesh_3: minutes of compilation); the CLI
 # test's volume checks then start from the sphere kept in test/data.
-cmake -S "$SRC" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG" "${launcher[@]}" \
+((needs_build)) && cmake -S "$SRC" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG" "${launcher[@]}" \
   -DDLF_DATA_DIR="$DATA_DIR" -DDLF_BUILD_BENCHMARK=OFF -DDLF_UNITY_BUILD=OFF -DDLF_TEST_PER_FILE=ON \
   -DDLF_WITH_TETRAHEDRALIZE=OFF -DDLF_TEST_CGAL_EXAMPLES=OFF > "$SCRATCH/configure.log" 2>&1 ||
   { echo "mutation: the scratch tree does not configure:"; tail -n 20 "$SCRATCH/configure.log"; exit 1; }
@@ -190,7 +224,7 @@ run_tests() {
     pytest)
       local k=()
       (($# > 1)) && k=(-k "${*:2}")
-      (cd "$SCRATCH" && env "${env[@]}" PYTHONPATH="$BUILD/python" DLF_EXECUTABLE="$BUILD/tools/dlf" DLF_DATA_DIR="$DATA_DIR" \
+      (cd "$SCRATCH" && env "${env[@]}" PYTHONPATH="$PY_PATH" DLF_EXECUTABLE="$DLF_EXE" DLF_DATA_DIR="$DATA_DIR" \
         PYTHONDONTWRITEBYTECODE=1 python3 -m pytest -q -p no:cacheprovider "$SRC/python/tests/$1" "${k[@]}" > "$log" 2>&1) || true
       if grep -qE '^[0-9]+ passed' "$log" && ! grep -qE '[0-9]+ (failed|error)' "$log"; then return; fi
       local failed; failed=$(sed -n 's/^FAILED [^:]*::\([A-Za-z0-9_]*\).*/\1/p' "$log" | sort -u | tr '\n' ' ')
@@ -198,6 +232,12 @@ run_tests() {
   esac
 }
 build() { cmake --build "$BUILD" --target "$1" -j"$JOBS" > "$2" 2>&1; }
+PY_PATH=$BUILD/python DLF_EXE=$BUILD/tools/dlf
+if ((sample)); then # the package of the built tree, copied: its .py mutated there
+  rm -rf "$SCRATCH/pkg"; mkdir -p "$SCRATCH/pkg"
+  cp -r "$SAMPLE_BUILD/python/discrete_lie_flow" "$SCRATCH/pkg/"
+  PY_PATH=$SCRATCH/pkg DLF_EXE=$SAMPLE_BUILD/tools/dlf
+fi
 runner_of() { IFS=' ' read -r -a R <<< "$(field "$1" 6)"; }
 
 # The baseline: every target and every test set the selection needs, unmutated.
@@ -208,14 +248,21 @@ for i in "${selected[@]}"; do
   runner_of "$i"; t=$(target_of "${R[@]}")
   [[ " ${targets[*]} " == *" $t "* ]] || targets+=("$t")
 done
-echo "mutation: scratch $SCRATCH; ${#selected[@]} mutations; baseline build of ${targets[*]}"
-for t in "${targets[@]}"; do
-  build "$t" "$SCRATCH/build_baseline_$t.log" ||
-    { echo "mutation: the unmutated tree does not build $t (see $SCRATCH/build_baseline_$t.log)"; exit 1; }
-done
+if ((sample)); then
+  targets=()
+  echo "mutation: scratch $SCRATCH; sample of ${#selected[@]}: ${selected[*]} (no baseline: the suite of $SAMPLE_BUILD passed)"
+  for i in "${selected[@]}"; do runner_of "$i"; baseline_done[${R[*]}]=ok; done
+else
+  echo "mutation: scratch $SCRATCH; ${#selected[@]} mutations; baseline build of ${targets[*]}"
+fi
+# One call: its translation units compile side by side (-j).
+if ((${#targets[@]})); then
+  cmake --build "$BUILD" --target "${targets[@]}" -j"$JOBS" > "$SCRATCH/build_baseline.log" 2>&1 ||
+    { echo "mutation: the unmutated tree does not build (see $SCRATCH/build_baseline.log)"; exit 1; }
+fi
 # Every test set, unmutated (before any mutation: a mutated target stays
 # built until its next mutation).
-for i in "${selected[@]}"; do
+((sample)) || for i in "${selected[@]}"; do
   runner_of "$i"; key="${R[*]}"
   [[ -n "${baseline_done[$key]:-}" ]] && continue
   failed=$(run_tests "$SCRATCH/baseline_$i.run" "${R[@]}")
@@ -225,7 +272,7 @@ for i in "${selected[@]}"; do
     baseline_done[$key]=failed
   fi
 done
-echo "mutation: baseline built and passed ($(( $(date +%s) - start )) s)"
+((sample)) || echo "mutation: baseline built and passed ($(( $(date +%s) - start )) s)"
 
 caught=0 missed=0 errors=0
 rows=()
@@ -238,15 +285,19 @@ for i in "${selected[@]}"; do
     printf 'mutation %d: ERROR  %s: its tests fail unmutated\n' "$i" "$name"
     errors=$((errors + 1)); rows+=("| $i | $w | $name | \`${file#$DLF/}\` | **error: tests fail unmutated** | |"); continue
   fi
-  cp "$SRC/$file" "$SCRATCH/original"
-  if ! FROM=$from TO=$to perl -0777 -i -pe '$n = () = /\Q$ENV{FROM}\E/g; s/\Q$ENV{FROM}\E/$ENV{TO}/; END { exit($n == 1 ? 0 : 3) }' "$SRC/$file"; then
+  target_file=$SRC/$file
+  ((sample)) && [[ "$file" == *.py ]] && target_file=$SCRATCH/pkg/discrete_lie_flow/$(basename "$file")
+  cp "$target_file" "$SCRATCH/original"
+  if ! FROM=$from TO=$to perl -0777 -i -pe '$n = () = /\Q$ENV{FROM}\E/g; s/\Q$ENV{FROM}\E/$ENV{TO}/; END { exit($n == 1 ? 0 : 3) }' "$target_file"; then
     printf 'mutation %d: ERROR  %s: the text does not occur exactly once in %s\n' "$i" "$name" "$file"
-    cp "$SCRATCH/original" "$SRC/$file"
+    cp "$SCRATCH/original" "$target_file"
     errors=$((errors + 1)); rows+=("| $i | $w | $name | \`${file#$DLF/}\` | **error: text not found** | |"); continue
   fi
   log=$SCRATCH/mutation_$i
   verdict=""
-  if ! build "$target" "$log.build"; then
+  if ((sample)) && [[ "$file" == *.py ]]; then
+    : > "$log.build" # nothing to build: the copied package is the one run
+  elif ! build "$target" "$log.build"; then
     printf 'mutation %d: ERROR  %s: does not compile (%s.build)\n' "$i" "$name" "$log"
     errors=$((errors + 1)); verdict="**error: does not compile**"
   elif [[ "$file" != *.py ]] && ! grep -qE 'Building CXX object|Linking' "$log.build"; then
@@ -263,7 +314,7 @@ for i in "${selected[@]}"; do
     fi
   fi
   rows+=("| $i | $w | $name | \`${file#$DLF/}\` | $verdict ($(( $(date +%s) - t0 )) s) | ${failed:-} |")
-  cp "$SCRATCH/original" "$SRC/$file"
+  cp "$SCRATCH/original" "$target_file"
 done
 applied=$((caught + missed))
 {
