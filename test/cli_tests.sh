@@ -251,6 +251,10 @@ check "--max-iterations 2: exit 3, status not_converged, the map written" bash -
   "[ $? = 3 ] && [ -s cap.obj ] && grep -q '\"status\": \"not_converged\"' cap.json && grep -q '\"stop_reason\": \"iteration_cap\"' cap.json"
 check "--max-iterations 2: the warning says where it stopped and what to try" bash -c \
   "grep -q 'not converged.*iteration_cap.*after 2 iterations' cap.err && grep -q -- '--max-iterations' cap.err"
+check "--max-iterations 2: the warning names the goal it missed, d_area against 2 + tolerance, with the value reached" python3 -c "
+import json, re, sys
+m = re.search(r'short of d_area ([0-9.e+-]+) > 2\.01; ', open('cap.err').read())
+sys.exit(not (m and abs(float(m.group(1)) / json.load(open('cap.json'))['final']['d_area'] - 1) < 1e-5))"
 check "--max-iterations 2: the written map scores as reported" bash -c \
   "'$DLF' score '$MESHES/lion-head.off' cap.obj --report cap_score.json -q && python3 -c \"import json,sys; a=json.load(open('cap.json'))['final']['d_area']; b=json.load(open('cap_score.json'))['metrics']['d_area']; sys.exit(abs(a-b) > 1e-9*a)\""
 check "paper mode: flips counted" number_is "$(json_get paper.json "" flips)" ">" 0

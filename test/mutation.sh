@@ -36,8 +36,9 @@
 # Exit 0 only when every selected mutation applied and was caught.
 #
 # --sample KEY N (what `.ci/mutations` runs after `.ci/test`): N mutations
-# among the cheap ones, picked by a hash of KEY and spread over the list,
-# so that successive commits rotate through them. Cheap: a header
+# among the cheap ones, picked by a hash of KEY (the first a library one,
+# the second a Python one, more spread over the library's), so that
+# successive commits rotate through them. Cheap: a header
 # mutation (one test file compiled, mutated, in the scratch build) or a
 # mutation of the Python package's .py (no compilation: a copy of the
 # package of the already built tree, SAMPLE_BUILD, default <repo>/build,
@@ -140,14 +141,18 @@ while (($#)); do
       exit $bad ;;
     --sample)
       sample=1
-      eligible=()
+      # the library's (G) and the Python package's (P): the first pick is
+      # one of G, the second one of P, more are spread over G
+      G=() P=()
       for i in $(seq 1 ${#MUTATIONS[@]}); do
         r=$(field $i 6) f=$(field $i 3)
-        [[ "$r" == gtest* || ( "$r" == pytest* && "$f" == *.py ) ]] && eligible+=("$i")
+        [[ "$r" == gtest* ]] && G+=("$i")
+        [[ "$r" == pytest* && "$f" == *.py ]] && P+=("$i")
       done
       h=$(( 16#$(printf '%s' "$2" | sha1sum | cut -c1-7) ))
       for ((k = 0; k < $3; ++k)); do
-        selected+=("${eligible[$(( (h + k * (${#eligible[@]} / $3)) % ${#eligible[@]} ))]}")
+        if ((k == 1)); then selected+=("${P[$(( h % ${#P[@]} ))]}")
+        else selected+=("${G[$(( (h + k * (${#G[@]} / $3 + 1)) % ${#G[@]} ))]}"); fi
       done
       shift 2 ;;
     *) selected+=("$1") ;;
@@ -195,10 +200,12 @@ if command -v ninja > /dev/null && [[ ! -f "$BUILD/Makefile" ]]; then launcher+=
 # -O1: a rebuild per mutation, so compile time matters more than run time.
 # No `dlf tetrahedralize` (CGAL's Mesh_3: minutes of compilation); the CLI
 # test's volume checks then start from the sphere kept in test/data.
-((needs_build)) && cmake -S "$SRC" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG" "${launcher[@]}" \
-  -DDLF_DATA_DIR="$DATA_DIR" -DDLF_BUILD_BENCHMARK=OFF -DDLF_UNITY_BUILD=OFF -DDLF_TEST_PER_FILE=ON \
-  -DDLF_WITH_TETRAHEDRALIZE=OFF -DDLF_TEST_CGAL_EXAMPLES=OFF > "$SCRATCH/configure.log" 2>&1 ||
-  { echo "mutation: the scratch tree does not configure:"; tail -n 20 "$SCRATCH/configure.log"; exit 1; }
+if ((needs_build)); then
+  cmake -S "$SRC" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG" "${launcher[@]}" \
+    -DDLF_DATA_DIR="$DATA_DIR" -DDLF_BUILD_BENCHMARK=OFF -DDLF_UNITY_BUILD=OFF -DDLF_TEST_PER_FILE=ON \
+    -DDLF_WITH_TETRAHEDRALIZE=OFF -DDLF_TEST_CGAL_EXAMPLES=OFF > "$SCRATCH/configure.log" 2>&1 ||
+    { echo "mutation: the scratch tree does not configure:"; tail -n 20 "$SCRATCH/configure.log"; exit 1; }
+fi
 
 # target_of KIND ARGS: the build target a runner needs
 target_of() {
