@@ -864,7 +864,7 @@ TEST(Sphere_map, SphereAndEllipsoid)
 {
   check_sphere_map({ "sphere", 2.001 });
   check_sphere_map({ "ellipsoid", 2.001 });
-  check_sphere_map({ "icosahedron", 2.01, false }); // 20 faces
+  check_sphere_map({ "icosahedron", 2.01 }); // 20 faces
 }
 
 TEST(Sphere_map, Blobby) { check_sphere_map({ "blobby", 2.01 }); }
