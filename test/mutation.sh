@@ -288,7 +288,7 @@ for i in "${selected[@]}"; do
   t0=$(date +%s)
   if [[ "${baseline_done[${R[*]}]}" != ok ]]; then
     printf 'mutation %d: ERROR  %s: its tests fail unmutated\n' "$i" "$name"
-    errors=$((errors + 1)); rows+=("| $i | $w | $name | \`${file#$DLF/}\` | **error: tests fail unmutated** | |"); continue
+    errors=$((errors + 1)); rows+=("| $i | $w | ${name//|/\\|} | \`${file#$DLF/}\` | **error: tests fail unmutated** | |"); continue
   fi
   target_file=$SRC/$file
   ((sample)) && [[ "$file" == *.py ]] && target_file=$SCRATCH/pkg/discrete_lie_flow/$(basename "$file")
@@ -296,7 +296,7 @@ for i in "${selected[@]}"; do
   if ! FROM=$from TO=$to perl -0777 -i -pe '$n = () = /\Q$ENV{FROM}\E/g; s/\Q$ENV{FROM}\E/$ENV{TO}/; END { exit($n == 1 ? 0 : 3) }' "$target_file"; then
     printf 'mutation %d: ERROR  %s: the text does not occur exactly once in %s\n' "$i" "$name" "$file"
     cp "$SCRATCH/original" "$target_file"
-    errors=$((errors + 1)); rows+=("| $i | $w | $name | \`${file#$DLF/}\` | **error: text not found** | |"); continue
+    errors=$((errors + 1)); rows+=("| $i | $w | ${name//|/\\|} | \`${file#$DLF/}\` | **error: text not found** | |"); continue
   fi
   log=$SCRATCH/mutation_$i
   verdict=""
@@ -318,7 +318,7 @@ for i in "${selected[@]}"; do
       printf 'mutation %d: SURVIVED %s (%d s)\n' "$i" "$name" "$(( $(date +%s) - t0 ))"
     fi
   fi
-  rows+=("| $i | $w | $name | \`${file#$DLF/}\` | $verdict ($(( $(date +%s) - t0 )) s) | ${failed:-} |")
+  rows+=("| $i | $w | ${name//|/\\|} | \`${file#$DLF/}\` | $verdict ($(( $(date +%s) - t0 )) s) | ${failed:-} |")
   printf '%s\n' "${rows[-1]}" >> "$SCRATCH/rows.md" # the table so far, should the run be cut short
   cp "$SCRATCH/original" "$target_file"
 done
