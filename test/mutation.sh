@@ -239,7 +239,7 @@ run_tests() {
       local k=()
       (($# > 1)) && k=(-k "${*:2}")
       (cd "$SCRATCH" && env "${env[@]}" PYTHONPATH="$PY_PATH" DLF_EXECUTABLE="$DLF_EXE" DLF_DATA_DIR="$DATA_DIR" \
-        PYTHONDONTWRITEBYTECODE=1 python3 -m pytest -q -p no:cacheprovider "$SRC/python/tests/$1" "${k[@]}" > "$log" 2>&1) || true
+        PYTHONDONTWRITEBYTECODE=1 "$PYTHON" -m pytest -q -p no:cacheprovider "$SRC/python/tests/$1" "${k[@]}" > "$log" 2>&1) || true
       if grep -qE '^[0-9]+ passed' "$log" && ! grep -qE '[0-9]+ (failed|error)' "$log"; then return; fi
       local failed; failed=$(sed -n 's/^FAILED [^:]*::\([A-Za-z0-9_]*\).*/\1/p' "$log" | sort -u | tr '\n' ' ')
       echo "${failed:-pytest ($(tail -n 1 "$log"))}" ;;
@@ -247,6 +247,11 @@ run_tests() {
 }
 build() { cmake --build "$BUILD" --target $1 -j"$JOBS" > "$2" 2>&1; } # $1: one or more targets
 PY_PATH=$BUILD/python DLF_EXE=$BUILD/tools/dlf
+# The interpreter the module was built for (as the suite's python tests).
+python_of() { sed -n 's/^_Python_EXECUTABLE:INTERNAL=//p' "$1/CMakeCache.txt" 2> /dev/null | head -n 1; }
+PYTHON=$(python_of "$BUILD")
+((sample)) && PYTHON=$(python_of "$SAMPLE_BUILD")
+PYTHON=${PYTHON:-python3}
 if ((sample)); then # the package of the built tree, copied: its .py mutated there
   rm -rf "$SCRATCH/pkg"; mkdir -p "$SCRATCH/pkg"
   cp -r "$SAMPLE_BUILD/python/discrete_lie_flow" "$SCRATCH/pkg/"
