@@ -248,7 +248,7 @@ run_tests() {
 build() { cmake --build "$BUILD" --target $1 -j"$JOBS" > "$2" 2>&1; } # $1: one or more targets
 PY_PATH=$BUILD/python DLF_EXE=$BUILD/tools/dlf
 # The interpreter the module was built for (as the suite's python tests).
-python_of() { sed -n 's/^_Python_EXECUTABLE:INTERNAL=//p' "$1/CMakeCache.txt" 2> /dev/null | head -n 1; }
+python_of() { [[ -f "$1/CMakeCache.txt" ]] && sed -n 's/^_Python_EXECUTABLE:INTERNAL=//p' "$1/CMakeCache.txt" | head -n 1 || true; }
 PYTHON=$(python_of "$BUILD")
 ((sample)) && PYTHON=$(python_of "$SAMPLE_BUILD")
 PYTHON=${PYTHON:-python3}
@@ -310,15 +310,17 @@ for i in "${selected[@]}"; do
   fi
   log=$SCRATCH/mutation_$i
   verdict=""
+  failed=""
   if ((sample)) && [[ "$file" == *.py ]]; then
-    : > "$log.build" # nothing to build: the copied package is the one run
+    echo "(nothing to build: the copied package is the one run)" > "$log.build"
   elif ! build "$target" "$log.build"; then
     printf 'mutation %d: ERROR  %s: does not compile (%s.build)\n' "$i" "$name" "$log"
     errors=$((errors + 1)); verdict="**error: does not compile**"
   elif [[ "$file" != *.py ]] && ! grep -qE 'Building CXX object|Linking' "$log.build"; then # (Ninja and make alike)
     printf 'mutation %d: ERROR  %s: nothing was recompiled (%s.build)\n' "$i" "$name" "$log"
     errors=$((errors + 1)); verdict="**error: nothing recompiled**"
-  else
+  fi
+  if [[ -z "$verdict" ]]; then
     failed=$(run_tests "$log.run" "${R[@]}")
     if [[ -n "$failed" ]]; then
       caught=$((caught + 1)); verdict="killed"
