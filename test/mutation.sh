@@ -96,7 +96,7 @@ MUTATIONS=(
   "volume|tet cubic root: the cubic's λ² coefficient with a wrong sign|$DLF/volume/volume_geometry.h|det(a1, b2, b3) + det(b1, a2, b3) + det(b1, b2, a3),|det(a1, b2, b3) + det(b1, a2, b3) - det(b1, b2, a3),|gtest volume Volume.CriticalStepOfATetMatchesBisectionOnTheExactPredicate"
   "volume|exact orient3d check: an inverted input tet accepted|$DLF/volume/volume_mesh.h|if(o == NEGATIVE) {|if(o == NEGATIVE \&\& false) {|gtest volume Volume.InputsThatAreNotBallsOrNotValidAreRefused"
   "volume|exact orient3d check: every tet counted positive|$DLF/volume/volume_mesh.h|if(o == POSITIVE) continue;\n    if(o == NEGATIVE) ++c.negative;|continue;\n    if(o == NEGATIVE) ++c.negative;|gtest volume Volume.Untangling*"
-  "volume|untangling: a round accepted as certified without the check|$DLF/volume/volume_untangle.h|if(dmin > 0 \&\& certified(x)) { out.success = true; return out; }|if(true) { out.success = true; return out; }|gtest volume Volume.Untangling*"
+  "volume|untangling acceptance: no step of the untangling ever accepted (Armijo refuses all)|$DLF/volume/volume_untangle.h|if(E_new <= E + 1e-4 * step * slope) { ok = true; break; }|if(E_new <= E + 1e-4 * step * slope \&\& false) { ok = true; break; }|gtest volume Volume.Untangling*"
   "volume|coarse level: an aggregate pair's block from one aggregate's gradients|$DLF/volume/volume_coarse_level.h|B[3 * c + d] += w[t] * h[i][c] * h[l][d];|B[3 * c + d] += w[t] * h[i][c] * h[i][d];|gtest volume Volume.CoarseMatrixIsTheGaussNewtonMatrixOnTheAggregates"
   # --- the reader (tools/dlf/mesh_input.cpp)
   "reader|a face using its first vertex twice (as its third) accepted|tools/dlf/mesh_input.cpp|if(p[0] == p[1] \|\| p[1] == p[2] \|\| p[2] == p[0])|if(p[0] == p[1] \|\| p[1] == p[2])|cli"
