@@ -217,6 +217,30 @@ TEST(Atlas, EveryComponentOneChartAndTheGutterKept)
   EXPECT_EQ(r.seam_length, 0.); // disks and holes are not cut
 }
 
+// Charts whose flows stop short (one iteration, a goal no flow reaches) and
+// cannot be split or peeled are laid out triangle by triangle: the atlas
+// still converges, every triangle a chart of its own where it had to be.
+// (So an atlas stops short only if a one-triangle chart did; its message
+// would name the first such chart's missed goal.)
+TEST(Atlas, ChartsStoppedShortAreLaidOutTriangleByTriangle)
+{
+  Mesh m = load("blobby_3cc");
+  UV_map uv = uv_map(m);
+  SMP::Discrete_lie_flow_atlas_options o;
+  o.flow.max_iterations = 1;
+  o.flow.tolerance = 1e-9;
+  o.max_split_depth = 0;
+  o.max_border_peels = 0;
+  const SMP::Discrete_lie_flow_atlas_report r = SMP::discrete_lie_flow_atlas(m, uv, o);
+  ASSERT_EQ(r.code, SMP::OK) << r.message;
+  EXPECT_TRUE(r.converged()) << r.message;
+  EXPECT_EQ(r.unconverged_charts, 0u);
+  EXPECT_EQ(r.message, "Success");
+  EXPECT_TRUE(r.valid());
+  EXPECT_EQ(r.peeled_faces, std::size_t(num_faces(m)));
+  EXPECT_EQ(r.charts, std::size_t(num_faces(m)));
+}
+
 TEST(Atlas, DensityGetsItsShare)
 {
   // Faces on one side of a plane get density 4: their uv area is 4 times

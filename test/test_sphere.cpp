@@ -699,7 +699,10 @@ struct Sphere_case
 {
   const char* name;
   double max_d_area;          // what the default run must reach
-  bool converges = true;      // and then also mean |log r| <= 0.02 (the default log_area_tolerance)
+  // true: converged, mean |log r| <= 0.02 (the default log_area_tolerance);
+  // false: this mesh's own triangles keep it short of that goal, asserted
+  // too (a row that starts converging is a change to look at, and to write here)
+  bool converges = true;
   double min_plane_distance = 0; // if > 0: every output triangle's plane at least this far from the centre
 };
 
@@ -733,10 +736,10 @@ void check_sphere_map(const Sphere_case& c, const SM& sm)
     }
     EXPECT_GE(h, c.min_plane_distance);
   }
-  if(c.converges) {
-    EXPECT_EQ(r.stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED);
-    EXPECT_LE(d.second, SMP::Discrete_lie_flow_options().sphere.log_area_tolerance);
-  }
+  const bool all_goals = r.stop_reason == SMP::Discrete_lie_flow_stop_reason::CONVERGED &&
+                         d.second <= SMP::Discrete_lie_flow_options().sphere.log_area_tolerance;
+  EXPECT_EQ(all_goals, c.converges) << "stop " << SMP::discrete_lie_flow_stop_reason_name(r.stop_reason)
+                                    << ", mean |log r| " << d.second << ": " << r.message;
   std::cout << "[sphere] " << c.name << ": " << m.faces.size() << " faces, start d_area " << r.initial_d_area
             << ", " << r.iterations << " iterations (" << SMP::discrete_lie_flow_stop_reason_name(r.stop_reason) << "), d_area "
             << d.first << ", mean |log r| " << d.second << ", inverted " << s.neg + s.zero << ", " << seconds << " s"
@@ -863,7 +866,7 @@ TEST(Sphere_map, SphereAndEllipsoid)
 {
   check_sphere_map({ "sphere", 2.001 });
   check_sphere_map({ "ellipsoid", 2.001 });
-  check_sphere_map({ "icosahedron", 2.01, false }); // 20 faces
+  check_sphere_map({ "icosahedron", 2.01 }); // 20 faces
 }
 
 TEST(Sphere_map, Blobby) { check_sphere_map({ "blobby", 2.01 }); }
@@ -906,11 +909,12 @@ TEST(Sphere_map, CoarseMeshesMeetTheGoalsOnceRefined)
 }
 
 // ---------------------------------------------------------------------------
-// The README's claim on the whole data set: every closed, connected, genus-0
-// triangle mesh with at least 200 faces (34 of them) is mapped with every
-// triangle positive (exact) and D_area <= 2.01; at least 28 of them also
-// converge with mean |log r| <= 0.02. The meshes are found by their
-// topology, not by name.
+// The claim of doc/sphere_benchmark.md on the whole data set: every closed,
+// connected, genus-0 triangle mesh with at least 200 faces (34 of them) is
+// mapped with every triangle positive (exact) and D_area <= 2.01; 29 of them
+// also converge with mean |log r| <= 0.02, and the other five are the
+// coarse CAD meshes named there. The meshes are found by their topology;
+// the names are only the expectation, compared as a whole.
 // ---------------------------------------------------------------------------
 
 bool closed_genus_0(SM& sm)
@@ -931,6 +935,7 @@ TEST(Sphere_data_set, EveryClosedGenus0Mesh)
     if(e.path().extension() == ".off") files.push_back(e.path());
   std::sort(files.begin(), files.end());
   std::size_t meshes = 0, all_goals = 0;
+  std::vector<std::string> short_of_goals;
   for(const std::filesystem::path& file : files) {
     // The file's own connectivity first (as `dlf` reads it), then the
     // repairing reader for polygon soups.
@@ -955,18 +960,22 @@ TEST(Sphere_data_set, EveryClosedGenus0Mesh)
     EXPECT_NEAR(r.final_d_area, d.first, 1e-9 * d.first);
     if(r.stop_reason == SMP::Discrete_lie_flow_stop_reason::CONVERGED && d.second <= SMP::Discrete_lie_flow_options().sphere.log_area_tolerance)
       ++all_goals;
+    else
+      short_of_goals.push_back(file.stem().string());
     std::cout << "[sphere data set] " << file.filename().string() << ": " << m.faces.size() << " faces, d_area "
               << d.first << ", mean |log r| " << d.second << " (" << SMP::discrete_lie_flow_stop_reason_name(r.stop_reason) << ")" << std::endl;
   }
-  EXPECT_EQ(meshes, 34u) << "the data set changed: the README's claim counts 34 meshes";
-  EXPECT_GE(all_goals, 28u);
+  EXPECT_EQ(meshes, 34u) << "the data set changed: doc/sphere_benchmark.md counts 34 meshes";
+  EXPECT_EQ(all_goals, 29u) << "doc/sphere_benchmark.md: 29 of 34 meet every goal";
+  std::sort(short_of_goals.begin(), short_of_goals.end());
+  EXPECT_EQ(short_of_goals, (std::vector<std::string>{ "bull", "cactus", "oblong", "oblong-shuffled", "part" }));
 }
 
 TEST(Sphere_map, IrregularMeshes)
 {
   // A scanned-like triangulation (benchmark/irregular_meshes.h): edge
   // collapses and tangential jitter give slivers (min angle 1.4°) and face
-  // areas spanning two decades. Certified, D_area <= 2.01.
+  // areas spanning two decades. Certified, converged with every goal met.
   struct Case { const char* name; std::vector<dlf_benchmark::Irregular_step> steps; };
   for(const Case& c : { Case{ "bear_bis", { { "decimate", 20 }, { "jitter", 90 } } } }) {
     SM sm = read_sphere_mesh(c.name);
@@ -982,7 +991,7 @@ TEST(Sphere_map, IrregularMeshes)
       }
     }
     EXPECT_LT(min_angle, 2.) << c.name << ": the generator no longer makes slivers";
-    check_sphere_map({ c.name, 2.01, false }, sm);
+    check_sphere_map({ c.name, 2.01 }, sm);
   }
 }
 

@@ -20,6 +20,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <map>
 #include <random>
 #include <sstream>
@@ -159,6 +160,40 @@ TEST(Volume, CubeGridIntoBallIsCertifiedAndVolumePreserving)
   const long double d = check_ball_map(m, x, {}, R);
   EXPECT_LE(d, 2.01L);
   EXPECT_LT(R.final_d_vol, R.initial_d_vol);
+}
+
+// A run stopped short names the goal it missed with its value: D_vol
+// against 2 + tolerance, and, with density levels, their share error
+// against its tolerance; a goal met is not named.
+TEST(Volume, NotConvergedMessageNamesTheMissedGoals)
+{
+  const Tet_mesh m = full_grid(6, 0.2);
+  SMP::Discrete_lie_flow_volume_options o;
+  o.max_iterations = 1;
+  o.tolerance = 1e-9;
+  SMP::Discrete_lie_flow_volume_parameterizer_3<> dlf(o);
+  std::vector<Point> x;
+  ASSERT_EQ(dlf.parameterize(m.points, m.tets, x), SMP::OK) << dlf.report().message;
+  const auto& R = dlf.report();
+  ASSERT_FALSE(R.converged());
+  std::ostringstream d_vol;
+  d_vol << std::setprecision(6) << "short of D_vol " << R.final_d_vol << " > 2;";
+  EXPECT_EQ(R.message.rfind("not converged: stopped (iteration_cap) after 1 iterations ", 0), 0u) << R.message;
+  EXPECT_NE(R.message.find(d_vol.str()), std::string::npos) << R.message;
+  EXPECT_EQ(R.message.find("share error"), std::string::npos) << R.message;
+
+  // A density whose two levels cannot reach their shares in one iteration,
+  // under a D_vol tolerance that one iteration meets.
+  o.tolerance = 1e3;
+  o.share_tolerance = 1e-9;
+  for(std::size_t t = 0; t < m.tets.size(); ++t) o.tet_density.push_back(t % 2 ? 1. : 4.);
+  SMP::Discrete_lie_flow_volume_parameterizer_3<> dense(o);
+  ASSERT_EQ(dense.parameterize(m.points, m.tets, x), SMP::OK) << dense.report().message;
+  const auto& Q = dense.report();
+  ASSERT_FALSE(Q.converged()) << Q.message;
+  EXPECT_NE(Q.message.find("short of share error "), std::string::npos) << Q.message;
+  EXPECT_NE(Q.message.find(" > 1e-09; the map is valid and fold-free"), std::string::npos) << Q.message;
+  EXPECT_EQ(Q.message.find("short of D_vol"), std::string::npos) << Q.message;
 }
 
 // A trial step the exact orient3d check refuses is counted and halved, and

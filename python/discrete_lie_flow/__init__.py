@@ -216,8 +216,7 @@ def atlas(V, F, *, border: str = "square", tips: _t.Optional[int] = None, gutter
     uv, report = _core.atlas(V, F, border=border, tips=tips, gutter=gutter, stretch=stretch, density=density,
                              name=name)
     if not report["converged"]:
-        message = f"{name}: {report['unconverged_charts']} of {report['charts']} charts did not converge " \
-                  f"(a valid atlas, D_area {report['d_area']:.6g})"
+        message = f"{name}: did not converge: {report['message']}"
         if strict:
             error = FlowError(message)
             error.report = report

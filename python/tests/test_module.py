@@ -294,6 +294,8 @@ def test_wrong_types_raise_type_error(V, F, message):
 @pytest.mark.parametrize("V, F, message", [
     (np.zeros((3, 2)), [[0, 1, 2]], r"V must have shape \(n, 3\), got \(3, 2\)"),
     ([[0, 0, 0], [1, 0]], [[0, 1, 2]], "V must be an array"),
+    (np.eye(3), [[0, 1, 2, 0]], r"F must have shape \(m, 3\), got \(1, 4\)"),
+    (np.eye(3), [0, 1, 2], r"F must have shape \(m, 3\), got \(3,\)"),
     (np.eye(3), [[0, 1, 3]], "F: face 0 refers to vertex 3 of 3"),
     (np.eye(3), [[0, -1, 2]], "F: face 0 refers to vertex -1 of 3"),
     (np.eye(3), [[0, 1, 1]], "face 0 uses vertex 1 twice"),
@@ -571,6 +573,7 @@ def test_not_converged_warns_or_raises_when_strict(nefertiti):
         uv, report = dlf.disk(V, F, max_iterations=0)
     assert report["status"] == "not_converged" and np.isfinite(uv).all()
     assert report["message"] in str(caught[0].message)
+    assert "short of d_area " in str(caught[0].message)  # the goal missed, with its value
     assert caught[0].filename == __file__  # pointed at the caller's line
     with pytest.raises(dlf.FlowError, match="did not converge") as e:
         dlf.disk(V, F, max_iterations=0, strict=True)
@@ -623,6 +626,31 @@ def atlas_check(V, F, uv, report):
     assert report["valid"] and report["inverted_faces"] == 0 and report["overlapping_chart_pairs"] == 0
     assert abs(uv_area.sum() - report["packing_efficiency"]) <= 1e-9
     return d_area
+
+
+def test_sphere_not_converged_warning_names_the_missed_goal():
+    V, F = read_off(mesh_path("sphere.off"))
+    with pytest.warns(UserWarning, match=r"mesh: did not converge: not converged: stopped \(plateau\) after .* "
+                                         r"short of mean \|log area ratio\| [0-9.e-]+ > 1e-09") as caught:
+        _, report = dlf.sphere(V, F, log_area_tolerance=1e-9, max_iterations=20)
+    assert report["status"] == "not_converged" and report["message"] in str(caught[0].message)
+
+
+def test_atlas_not_converged_warning_names_the_missed_goal(monkeypatch):
+    V, F = read_off(mesh_path("knot1.off"))
+    uv, report = dlf.atlas(V, F)
+    assert report["status"] == "ok" and report["message"] == "Success"
+    # A report as discrete_lie_flow_atlas() writes it when a chart stops short.
+    short = dict(report, status="not_converged", converged=False, unconverged_charts=1,
+                 message="not converged: 1 of 3 charts stopped short of their goals (a valid atlas still); the first, "
+                         "chart 2 (40 faces): not converged: stopped (iteration_cap) after 150 iterations short of "
+                         "d_area 2.0042 > 2.001; the map is fold-free on the input's triangles, d_area 2.0042")
+    monkeypatch.setattr(dlf._core, "atlas", lambda *args, **kwargs: (uv, short))
+    with pytest.warns(UserWarning, match=r"mesh: did not converge: not converged: 1 of 3 charts .* short of "
+                                         r"d_area 2\.0042 > 2\.001"):
+        dlf.atlas(V, F)
+    with pytest.raises(dlf.FlowError, match=r"short of d_area 2\.0042 > 2\.001"):
+        dlf.atlas(V, F, strict=True)
 
 
 def test_atlas_of_a_closed_mesh():

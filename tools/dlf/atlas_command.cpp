@@ -297,6 +297,7 @@ nlohmann::ordered_json atlas_report_json(const SMP::Discrete_lie_flow_atlas_repo
 {
   nlohmann::ordered_json j;
   j["status"] = r.converged() ? "ok" : "not_converged";
+  j["message"] = r.message;
   j["components"] = r.components;
   j["isolated_vertices"] = r.isolated_vertices;
   j["closed_components"] = r.closed_components;
@@ -483,7 +484,9 @@ int atlas_command(const std::vector<std::string>& args)
     std::cerr << "dlf: atlas: " << r.charts << " charts, seam " << r.seam_length << ", packing efficiency "
               << r.packing_efficiency << ", D_area " << r.metrics.d_area << ", " << r.inverted_faces + r.degenerate_faces
               << " inverted or degenerate, " << r.overlapping_chart_pairs << " overlapping charts, " << r.seconds << " s\n";
-  return r.converged() ? EXIT_OK : EXIT_NOT_CONVERGED;
+  if(r.converged()) return EXIT_OK;
+  std::cerr << "dlf: warning: " << r.message << "\n";
+  return EXIT_NOT_CONVERGED;
 }
 
 } // namespace dlf_cli

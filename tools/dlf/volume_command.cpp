@@ -379,7 +379,15 @@ int volume_command(const std::vector<std::string>& args)
       std::printf("roi: share %.6g, target %.6g (%+.3f%%)\n", roi_achieved, roi_target, 100 * (roi_achieved / roi_target - 1));
     if(dropped) std::printf("note: %zu vertices of no tetrahedron were left out\n", dropped);
   }
-  return R.converged() ? EXIT_OK : EXIT_NOT_CONVERGED;
+  if(R.converged()) return EXIT_OK;
+  // As dlf disk and dlf sphere: the goal missed and its value, then what to try.
+  std::cerr << "dlf: warning: " << R.message << "; "
+            << (R.stop_reason == SMP::Discrete_lie_flow_stop_reason::ITERATION_CAP
+                  ? "it was still improving: a larger --max-iterations may reach the tolerance"
+                  : R.stop_reason == SMP::Discrete_lie_flow_stop_reason::INTERRUPTED ? "the run was interrupted"
+                                                                                     : "more iterations will not help")
+            << "\n";
+  return EXIT_NOT_CONVERGED;
 }
 
 } // namespace dlf_cli

@@ -357,6 +357,15 @@ Discrete_lie_flow_atlas_report discrete_lie_flow_atlas(const TriangleMesh& mesh,
   R.seconds_pack = std::chrono::duration<double>(Clock::now() - t1).count();
   R.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   R.message = "Success";
+  // Short of the goals: how many charts, and the first one's own message,
+  // which names the goal its flow missed and its value.
+  for(std::size_t c = 0; c < R.chart_reports.size() && R.unconverged_charts > 0; ++c)
+    if(R.chart_reports[c].stop_reason != Discrete_lie_flow_stop_reason::CONVERGED) {
+      R.message = "not converged: " + std::to_string(R.unconverged_charts) + " of " + std::to_string(R.charts) +
+                  " charts stopped short of their goals (a valid atlas still); the first, chart " + std::to_string(c) +
+                  " (" + std::to_string(R.chart_reports[c].faces) + " faces): " + R.chart_reports[c].message;
+      break;
+    }
   return R;
 }
 

@@ -21,7 +21,9 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <iomanip>
 #include <map>
+#include <sstream>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -404,8 +406,9 @@ private:
     // (The last round may have stopped on its rescaled targets' plateau with
     // both tolerances met on the prescribed ones: that is converged.)
     D::tet_dets(x, tets, u);
-    const bool reached = energy.value(u, 0) - 2 <= O.tolerance &&
-                         D::level_share_error(S.level, S.level_share, u) <= S.share_tolerance;
+    const double d_vol_reached = energy.value(u, 0);
+    const double share_error_reached = D::level_share_error(S.level, S.level_share, u);
+    const bool reached = d_vol_reached - 2 <= O.tolerance && share_error_reached <= S.share_tolerance;
     if(reached && out.stop_reason != Discrete_lie_flow_stop_reason::INTERRUPTED)
       out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED;
     else if(!reached && out.stop_reason == Discrete_lie_flow_stop_reason::CONVERGED)
@@ -459,8 +462,22 @@ private:
                                            " tetrahedra and " + std::to_string(R.inverted_border_faces) +
                                            " border triangles not positive");
     R.status = OK;
-    R.message = R.converged() ? "Success"
-                              : "valid and fold-free, but D_vol - 2 or a density level's share is above its tolerance";
+    if(R.converged()) {
+      R.message = "Success";
+    } else {
+      // As the surface flows: where it stopped, each goal missed with its value.
+      std::ostringstream missed;
+      missed << std::setprecision(6);
+      if(!(d_vol_reached - 2 <= O.tolerance)) missed << "D_vol " << d_vol_reached << " > " << 2 + O.tolerance;
+      if(!S.level.empty() && !(share_error_reached <= S.share_tolerance))
+        missed << (missed.tellp() > 0 ? "; " : "") << "share error " << share_error_reached << " > " << S.share_tolerance;
+      std::ostringstream s;
+      s << std::setprecision(6) << "not converged: stopped (" << discrete_lie_flow_stop_reason_name(R.stop_reason)
+        << ") after " << R.iterations << " iterations short of "
+        << (missed.tellp() > 0 ? missed.str() : std::string("the flow's own stop rule"))
+        << "; the map is valid and fold-free, D_vol " << R.final_d_vol;
+      R.message = s.str();
+    }
     return OK;
   }
 
