@@ -295,9 +295,14 @@ void fuzz_medit(const std::string& text)
     if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()) ||
        p.x() * p.x() + p.y() * p.y() + p.z() * p.z() > 1 + 1e-9)
       violation("volume: a point not finite or outside the unit ball");
+  // CGAL's exact predicate on the returned doubles (Kernel above is not exact).
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_3 Exact_point;
+  auto exact = [&](int i) {
+    const Kernel::Point_3& p = ball[std::size_t(i)];
+    return Exact_point(p.x(), p.y(), p.z());
+  };
   for(const auto& t : tets)
-    if(CGAL::orientation(ball[std::size_t(t[0])], ball[std::size_t(t[1])], ball[std::size_t(t[2])],
-                         ball[std::size_t(t[3])]) != CGAL::POSITIVE)
+    if(CGAL::orientation(exact(t[0]), exact(t[1]), exact(t[2]), exact(t[3])) != CGAL::POSITIVE)
       violation("volume: ok with a tet that is not positive");
 }
 
