@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/planar_certified_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/planar_gauss_newton.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/planar_paper_flow.h>
 
 #include <Eigen/SparseCholesky>
@@ -946,6 +947,73 @@ TEST(Paper_stall, PlainStepFixedConnectivityMushroom)
   EXPECT_LE(out.final_d_area, D::d_area_of(u0, T.P.target));
   EXPECT_NEAR(D::d_area_of(u, T.P.target), out.final_d_area, 1e-12 * out.final_d_area);
   for(const auto& h : out.history) EXPECT_GE(h.d_area, out.final_d_area * (1 - 1e-12));
+}
+
+// The planar Gauss–Newton matrix against its definition: with ε = 0,
+// xᵀ H x = Σ_t w_t (∂u_t/∂s)², u_t a face's signed area and s the move
+// Σ_a x_a basis_a of the dofs, differentiated numerically. Vertices with two
+// dofs, one (a border tangent) and none (held) all occur.
+TEST(Planar_gauss_newton, MatrixIsItsDefinition)
+{
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> U(-1, 1);
+  const int n = 5; // an n × n grid of the unit square, jittered
+  std::vector<Vec2> uv;
+  std::vector<Face> faces;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i) {
+      const bool border = i == 0 || j == 0 || i == n || j == n;
+      uv.push_back({{ (i + (border ? 0 : 0.2 * U(rng))) / n, (j + (border ? 0 : 0.2 * U(rng))) / n }});
+    }
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i;
+      faces.push_back(Face{{ a, a + 1, a + n + 2 }});
+      faces.push_back(Face{{ a, a + n + 2, a + n + 1 }});
+    }
+  std::vector<int> first(uv.size()), count(uv.size());
+  std::vector<Vec2> basis;
+  for(std::size_t v = 0; v < uv.size(); ++v) {
+    const int i = int(v) % (n + 1), j = int(v) / (n + 1);
+    const bool corner = (i == 0 || i == n) && (j == 0 || j == n);
+    const bool border = i == 0 || j == 0 || i == n || j == n;
+    first[v] = int(basis.size());
+    count[v] = corner ? 0 : border ? 1 : 2;
+    if(count[v] == 1) {
+      const double t = U(rng);
+      basis.push_back({{ std::cos(t), std::sin(t) }});
+    } else if(count[v] == 2) {
+      basis.push_back({{ 1, 0 }});
+      basis.push_back({{ 0, 1 }});
+    }
+  }
+  std::vector<double> w(faces.size());
+  for(double& x : w) x = 1 + U(rng) * U(rng);
+  D::Planar_gauss_newton_system system(first, count, int(basis.size()));
+  const D::Sparse_matrix A = system.assemble(uv, faces, basis, w, 0);
+  ASSERT_EQ(A.rows(), Eigen::Index(basis.size()));
+  for(int trial = 0; trial < 3; ++trial) {
+    Eigen::VectorXd x(A.rows());
+    for(Eigen::Index k = 0; k < x.size(); ++k) x[k] = U(rng);
+    const double e = 1e-6;
+    std::vector<Vec2> plus = uv, minus = uv;
+    for(std::size_t v = 0; v < uv.size(); ++v)
+      for(int k = 0; k < count[v]; ++k) {
+        const Vec2& b = basis[std::size_t(first[v] + k)];
+        const double xv = x[Eigen::Index(first[v] + k)];
+        for(int c = 0; c < 2; ++c) { plus[v][c] += e * xv * b[c]; minus[v][c] -= e * xv * b[c]; }
+      }
+    std::vector<double> up, um;
+    D::signed_areas_2(plus, faces, up);
+    D::signed_areas_2(minus, faces, um);
+    double expected = 0;
+    for(std::size_t t = 0; t < faces.size(); ++t) {
+      const double du = (up[t] - um[t]) / (2 * e);
+      expected += w[t] * du * du;
+    }
+    EXPECT_GT(expected, 0.);
+    EXPECT_NEAR(x.dot(A * x), expected, 1e-6 * expected);
+  }
 }
 
 } // namespace dlf_test_numerics
