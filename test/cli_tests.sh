@@ -562,6 +562,12 @@ expect_error "garbage OBJ" 1 "cannot read" disk garbage.obj
 printf 'ply\nformat ascii 1.0\nproperty float x\nelement vertex 3\nend_header\n0\n1\n2\n' > property_first.ply
 expect_error "PLY property before any element" 1 "property_first.ply', line 3: a PLY 'property' before any 'element'" \
   disk property_first.ply
+printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty uint16 z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' > integer_coordinate.ply
+expect_error "PLY integer coordinate" 1 "integer_coordinate.ply', line 6: vertex coordinate 'z' declared as 'uint16'" \
+  disk integer_coordinate.ply
+printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nelement halfedge 1\nproperty float source\nproperty uint target\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0 1\n' > float_halfedge.ply
+expect_error "PLY float halfedge source" 1 "float_halfedge.ply', line 10: halfedge 'source' declared as 'float'" \
+  disk float_halfedge.ply
 expect_error "closed mesh (not a disk): the reason first, dlf sphere named" 1 \
   "not a disk: a closed surface (no border loop) of genus 0 (Euler characteristic 2); dlf disk needs a border: 'dlf sphere' maps it" \
   disk "$MESHES/sphere.off"

@@ -84,23 +84,48 @@ bool has_ply_extension(const std::string& path)
   return ext == ".ply";
 }
 
-// CGAL 5.5's PLY reader takes the last element of an empty list when a
-// header declares a property before any element (undefined behaviour, a
-// finding of fuzz/dlf_fuzz.cpp): such a header is refused here first.
+// CGAL 5.5's PLY reader misbehaves on some headers (findings of
+// fuzz/dlf_fuzz.cpp), which are refused here first:
+//  - a property before any element: it takes the last element of an empty
+//    list (undefined behaviour);
+//  - a vertex coordinate (x, y, z) that is not a float or a double, or a list:
+//    it casts the property to a float and dereferences the null result;
+//  - a halfedge's source or target that is not a uint (same cast).
 void check_ply_header(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
   std::string line;
   bool element = false;
+  std::string element_name;
   for(std::size_t number = 1; std::getline(in, line); ++number) {
     std::istringstream words(line);
     std::string keyword;
     words >> keyword;
     if(keyword == "end_header") return;
-    if(keyword == "element") element = true;
-    if(keyword == "property" && !element)
-      throw Cli_error(quoted(path) + ", line " + std::to_string(number) +
-                      ": a PLY 'property' before any 'element' (not a valid PLY header)");
+    if(keyword == "element") {
+      element = true;
+      words >> element_name;
+    }
+    if(keyword != "property") continue;
+    const std::string where = quoted(path) + ", line " + std::to_string(number) + ": ";
+    if(!element)
+      throw Cli_error(where + "a PLY 'property' before any 'element' (not a valid PLY header)");
+    std::string type, name;
+    words >> type;
+    if(type == "list") {
+      std::string size_type, item_type;
+      words >> size_type >> item_type;
+    }
+    words >> name;
+    const bool vertex = element_name == "vertex" || element_name == "vertices";
+    if(vertex && (name == "x" || name == "y" || name == "z") &&
+       type != "float" && type != "float32" && type != "double" && type != "float64")
+      throw Cli_error(where + "vertex coordinate '" + name + "' declared as '" + type +
+                      "' (a PLY vertex coordinate must be a float or a double)");
+    if(element_name == "halfedge" && (name == "source" || name == "target") &&
+       type != "uint" && type != "uint32")
+      throw Cli_error(where + "halfedge '" + name + "' declared as '" + type +
+                      "' (a PLY halfedge's source and target must be uint)");
   }
 }
 
