@@ -568,6 +568,8 @@ expect_error "PLY integer coordinate" 1 "integer_coordinate.ply', line 6: vertex
 printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nelement halfedge 1\nproperty float source\nproperty uint target\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0 1\n' > float_halfedge.ply
 expect_error "PLY float halfedge source" 1 "float_halfedge.ply', line 10: halfedge 'source' declared as 'float'" \
   disk float_halfedge.ply
+printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list char int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n-3 0 1 2\n' > negative_list.ply
+expect_error "PLY negative list count" 1 "negative_list.ply': cannot read as a mesh (the reader failed: " disk negative_list.ply
 expect_error "closed mesh (not a disk): the reason first, dlf sphere named" 1 \
   "not a disk: a closed surface (no border loop) of genus 0 (Euler characteristic 2); dlf disk needs a border: 'dlf sphere' maps it" \
   disk "$MESHES/sphere.off"

@@ -431,7 +431,17 @@ Indexed_mesh read_triangle_mesh(const std::string& path)
   // The soup reader, not PMP::IO::read_polygon_mesh(): the latter's repair
   // step merges duplicate points and drops isolated ones, which renumbers
   // vertices, and every output of the tool must keep the input's numbering.
-  if(!(has_off_extension(path) ? read_off_soup(path, points, polygons) : CGAL::IO::read_polygon_soup(path, points, polygons)))
+  bool read = false;
+  try {
+    read = has_off_extension(path) ? read_off_soup(path, points, polygons)
+                                   : CGAL::IO::read_polygon_soup(path, points, polygons);
+  } catch(const std::exception& e) {
+    // CGAL 5.5's PLY reader resizes a list to the count it reads, so a
+    // negative count (a signed size type) or a huge one throws (a fuzzing
+    // finding); whatever a reader throws is the file's fault.
+    throw Cli_error(quoted(path) + ": cannot read as a mesh (the reader failed: " + e.what() + ")");
+  }
+  if(!read)
     throw Cli_error(quoted(path) + ": cannot read as a mesh (CGAL reads .off, .obj, .ply, .stl, .ts, .vtp)");
   std::vector<Vec3> xyz;
   xyz.reserve(points.size());
