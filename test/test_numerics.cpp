@@ -953,13 +953,11 @@ TEST(Paper_stall, PlainStepFixedConnectivityMushroom)
 // xᵀ H x = Σ_t w_t (∂u_t/∂s)², u_t a face's signed area and s the move
 // Σ_a x_a basis_a of the dofs, differentiated numerically. Vertices with two
 // dofs, one (a border tangent) and none (held) all occur.
-TEST(Planar_gauss_newton, MatrixIsItsDefinition)
+// An n × n grid of the unit square, its interior vertices jittered by up to
+// a fifth of a cell (every triangle stays positive); vertex j (n + 1) + i.
+void jittered_grid(int n, std::mt19937& rng, std::vector<Vec2>& uv, std::vector<Face>& faces)
 {
-  std::mt19937 rng(17);
   std::uniform_real_distribution<double> U(-1, 1);
-  const int n = 5; // an n × n grid of the unit square, jittered
-  std::vector<Vec2> uv;
-  std::vector<Face> faces;
   for(int j = 0; j <= n; ++j)
     for(int i = 0; i <= n; ++i) {
       const bool border = i == 0 || j == 0 || i == n || j == n;
@@ -971,6 +969,16 @@ TEST(Planar_gauss_newton, MatrixIsItsDefinition)
       faces.push_back(Face{{ a, a + 1, a + n + 2 }});
       faces.push_back(Face{{ a, a + n + 2, a + n + 1 }});
     }
+}
+
+TEST(Planar_gauss_newton, MatrixIsItsDefinition)
+{
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> U(-1, 1);
+  const int n = 5;
+  std::vector<Vec2> uv;
+  std::vector<Face> faces;
+  jittered_grid(n, rng, uv, faces);
   std::vector<int> first(uv.size()), count(uv.size());
   std::vector<Vec2> basis;
   for(std::size_t v = 0; v < uv.size(); ++v) {
@@ -1013,6 +1021,131 @@ TEST(Planar_gauss_newton, MatrixIsItsDefinition)
     }
     EXPECT_GT(expected, 0.);
     EXPECT_NEAR(x.dot(A * x), expected, 1e-6 * expected);
+  }
+}
+
+// The Sobolev direction against its definition, assembled densely here:
+// d = −M⁻¹ Bᵀg over the dofs (interior: x and y; a sliding border vertex:
+// its tangent; a corner: none), M = [A C; Cᵀ CᵀA⁻¹C + S̃] from the cotangent
+// stiffness K = L ⊗ I₂ (A = B_Iᵀ K B_I, C = B_Iᵀ K B_B) with the border's
+// Schur complement replaced by S̃ = diag(L_vv).
+TEST(Sobolev_direction, IsMinusTheInverseMetricAppliedToTheGradient)
+{
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> U(-1, 1);
+  const int n = 4;
+  std::vector<Vec2> uv;
+  std::vector<Face> faces;
+  jittered_grid(n, rng, uv, faces);
+  const std::size_t nv = uv.size();
+  std::vector<int> boundary_of(nv, -1);
+  std::vector<Vec2> tangent(nv, Vec2{{ 0, 0 }}), g(nv);
+  int nb = 0;
+  for(std::size_t v = 0; v < nv; ++v) {
+    const int i = int(v) % (n + 1), j = int(v) / (n + 1);
+    const bool corner = (i == 0 || i == n) && (j == 0 || j == n);
+    if(i == 0 || j == 0 || i == n || j == n) {
+      boundary_of[v] = nb++;
+      const double t = 3 * U(rng);
+      if(!corner) tangent[v] = {{ std::cos(t), std::sin(t) }};
+    }
+    g[v] = {{ U(rng), U(rng) }};
+  }
+  // The cotangent Laplacian from the angles.
+  Eigen::MatrixXd L = Eigen::MatrixXd::Zero(Eigen::Index(nv), Eigen::Index(nv));
+  for(const Face& t : faces)
+    for(int k = 0; k < 3; ++k) {
+      const Vec2& a = uv[std::size_t(t[k])];
+      const Vec2& b = uv[std::size_t(t[(k + 1) % 3])];
+      const Vec2& c = uv[std::size_t(t[(k + 2) % 3])];
+      const double angle = std::abs(std::atan2((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]),
+                                               (b[0] - a[0]) * (c[0] - a[0]) + (b[1] - a[1]) * (c[1] - a[1])));
+      const double w = 0.5 / std::tan(angle);
+      const Eigen::Index i = t[(k + 1) % 3], j = t[(k + 2) % 3];
+      L(i, j) -= w; L(j, i) -= w; L(i, i) += w; L(j, j) += w;
+    }
+  // The dofs' basis B (2 nv × m), interior dofs first.
+  std::vector<std::pair<std::size_t, Vec2> > dofs;
+  for(std::size_t v = 0; v < nv; ++v)
+    if(boundary_of[v] < 0) { dofs.push_back({ v, Vec2{{ 1, 0 }} }); dofs.push_back({ v, Vec2{{ 0, 1 }} }); }
+  const Eigen::Index mi = Eigen::Index(dofs.size());
+  for(std::size_t v = 0; v < nv; ++v)
+    if(boundary_of[v] >= 0 && (tangent[v][0] != 0 || tangent[v][1] != 0)) dofs.push_back({ v, tangent[v] });
+  const Eigen::Index m = Eigen::Index(dofs.size());
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(2 * Eigen::Index(nv), m);
+  Eigen::VectorXd G(2 * Eigen::Index(nv));
+  for(Eigen::Index k = 0; k < m; ++k)
+    for(int c = 0; c < 2; ++c) B(2 * Eigen::Index(dofs[std::size_t(k)].first) + c, k) = dofs[std::size_t(k)].second[c];
+  for(std::size_t v = 0; v < nv; ++v) { G[2 * Eigen::Index(v)] = g[v][0]; G[2 * Eigen::Index(v) + 1] = g[v][1]; }
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(2 * Eigen::Index(nv), 2 * Eigen::Index(nv));
+  for(Eigen::Index i = 0; i < Eigen::Index(nv); ++i)
+    for(Eigen::Index j = 0; j < Eigen::Index(nv); ++j) { K(2 * i, 2 * j) = L(i, j); K(2 * i + 1, 2 * j + 1) = L(i, j); }
+  const Eigen::MatrixXd BKB = B.transpose() * K * B;
+  const Eigen::MatrixXd A = BKB.topLeftCorner(mi, mi), C = BKB.topRightCorner(mi, m - mi);
+  Eigen::MatrixXd M = BKB;
+  M.bottomRightCorner(m - mi, m - mi) = C.transpose() * A.ldlt().solve(C);
+  for(Eigen::Index k = mi; k < m; ++k) M(k, k) += L(Eigen::Index(dofs[std::size_t(k)].first), Eigen::Index(dofs[std::size_t(k)].first));
+  const Eigen::VectorXd expected = B * M.ldlt().solve(-(B.transpose() * G));
+
+  Eigen::SimplicialLDLT<D::Sparse_matrix, Eigen::Lower> solver;
+  D::Split_sobolev_direction<Eigen::SimplicialLDLT<D::Sparse_matrix, Eigen::Lower> > sobolev(boundary_of, solver);
+  sobolev.assemble(uv, faces);
+  ASSERT_TRUE(sobolev.factorize());
+  std::vector<Vec2> d;
+  ASSERT_TRUE(sobolev.solve(g, tangent, d));
+  ASSERT_EQ(d.size(), nv);
+  double slope = 0, border_slope = 0;
+  for(std::size_t v = 0; v < nv; ++v) {
+    for(int c = 0; c < 2; ++c)
+      EXPECT_NEAR(d[v][c], expected[2 * Eigen::Index(v) + c], 1e-9 * expected.cwiseAbs().maxCoeff()) << "vertex " << v;
+    slope += d[v][0] * g[v][0] + d[v][1] * g[v][1];
+    if(boundary_of[v] >= 0) border_slope += d[v][0] * g[v][0] + d[v][1] * g[v][1];
+  }
+  EXPECT_LT(slope, 0.) << "not a descent direction";
+  EXPECT_NE(border_slope, 0.) << "the border vertices did not move";
+}
+
+// One relaxation sweep of the planar energy: the energy it reports (its
+// running sums) is the energy of the map it leaves, recomputed from the
+// areas here, lower than at the start, every face positive.
+TEST(Planar_relaxation, SweepKeepsItsEnergyAndLowersIt)
+{
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> U(-1, 1);
+  const int n = 6;
+  std::vector<Vec2> uv;
+  std::vector<Face> faces;
+  jittered_grid(n, rng, uv, faces);
+  std::vector<double> target(faces.size());
+  for(double& a : target) a = 1 + 0.8 * U(rng); // far from the grid's areas: every vertex has a move
+  const D::Area_barrier_energy energy(target);
+  const D::Vertex_faces around(uv.size(), faces);
+  std::vector<char> movable(uv.size(), 0);
+  std::size_t interior = 0;
+  for(std::size_t v = 0; v < uv.size(); ++v) {
+    const int i = int(v) % (n + 1), j = int(v) / (n + 1);
+    movable[v] = !(i == 0 || j == 0 || i == n || j == n);
+    interior += std::size_t(movable[v]);
+  }
+  std::vector<double> u;
+  D::signed_areas_2(uv, faces, u);
+  double E = energy.value(u);
+  for(int sweep = 0; sweep < 3; ++sweep) {
+    const std::vector<Vec2> before = uv;
+    const D::Relaxation_outcome out = D::relax_planar_vertices(faces, around, energy, 0.9, movable, uv, u);
+    EXPECT_GT(out.moved, sweep == 0 ? interior / 2 : 0) << "sweep " << sweep;
+    for(std::size_t v = 0; v < uv.size(); ++v)
+      if(!movable[v]) EXPECT_TRUE(uv[v] == before[v]) << "a border vertex moved: " << v;
+    std::vector<double> fresh;
+    D::signed_areas_2(uv, faces, fresh);
+    for(std::size_t t = 0; t < faces.size(); ++t) {
+      ASSERT_GT(fresh[t], 0.) << "face " << t;
+      EXPECT_EQ(u[t], fresh[t]) << "face " << t << ": the areas kept are not the map's";
+    }
+    const double E_fresh = energy.value(fresh);
+    EXPECT_NEAR(out.energy, E_fresh, 1e-10 * E_fresh) << "sweep " << sweep;
+    EXPECT_LT(E_fresh, E) << "sweep " << sweep;
+    E = E_fresh;
   }
 }
 
