@@ -42,15 +42,20 @@ if [[ "$(cat "$BUILD_DIR/flags" 2>/dev/null)" != "$CXX ${flags[*]}" ]]; then
   echo "$CXX ${flags[*]}" >"$BUILD_DIR/flags"
 fi
 objects=()
+compiling=()
 for src in "${sources[@]}"; do
   obj="$BUILD_DIR/obj/$(basename "$src" .cpp).o"
   objects+=("$obj")
   # Rebuild when the source or any project header is newer than the object.
   if [[ ! -f "$obj" || -n "$(find "$src" include tools/dlf -newer "$obj" \( -name '*.h' -o -path "$src" \) | head -1)" ]]; then
     echo "fuzz: compiling $src"
-    nice -n "${FUZZ_NICE:-19}" "$CXX" "${flags[@]}" -c "$src" -o "$obj"
+    # FUZZ_JOBS compiles at a time (2 by default); the largest source first.
+    while (( $(jobs -rp | wc -l) >= ${FUZZ_JOBS:-2} )); do wait -n; done
+    nice -n "${FUZZ_NICE:-19}" "$CXX" "${flags[@]}" -c "$src" -o "$obj" &
+    compiling+=($!)
   fi
 done
+for pid in "${compiling[@]}"; do wait "$pid"; done
 if [[ ! -x "$BUILD_DIR/dlf_fuzz" || -n "$(find "${objects[@]}" -newer "$BUILD_DIR/dlf_fuzz" | head -1)" ]]; then
   "$CXX" "${flags[@]}" "${objects[@]}" -lboost_program_options -lgmp -lmpfr -o "$BUILD_DIR/dlf_fuzz"
 fi
