@@ -5,6 +5,7 @@
 #
 #   benchmark/sphere.sh                                  # every closed genus-0 mesh + the large section
 #   benchmark/sphere.sh --meshes sphere.off --no-large   # extra options go to sphere_benchmark
+#   benchmark/sphere.sh --check                          # and exit 3 when a goal the page states is missed
 #
 # BUILD_DIR (default: build) is the CMake build directory; DATA_DIR (default:
 # the build's DLF_DATA_DIR) holds CGAL's data set (meshes in $DATA_DIR/meshes).
