@@ -955,38 +955,46 @@ TEST(Paper_stall, PlainStepFixedConnectivityMushroom)
 // dofs, one (a border tangent) and none (held) all occur.
 // An n × n grid of the unit square, its interior vertices jittered by up to
 // a fifth of a cell (every triangle stays positive); vertex j (n + 1) + i.
-void jittered_grid(int n, std::mt19937& rng, std::vector<Vec2>& uv, std::vector<Face>& faces)
+struct Jittered_grid
 {
-  std::uniform_real_distribution<double> U(-1, 1);
-  for(int j = 0; j <= n; ++j)
-    for(int i = 0; i <= n; ++i) {
-      const bool border = i == 0 || j == 0 || i == n || j == n;
-      uv.push_back({{ (i + (border ? 0 : 0.2 * U(rng))) / n, (j + (border ? 0 : 0.2 * U(rng))) / n }});
-    }
-  for(int j = 0; j < n; ++j)
-    for(int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i;
-      faces.push_back(Face{{ a, a + 1, a + n + 2 }});
-      faces.push_back(Face{{ a, a + n + 2, a + n + 1 }});
-    }
-}
+  int n;
+  std::vector<Vec2> uv;
+  std::vector<Face> faces;
+
+  Jittered_grid(int n, std::mt19937& rng) : n(n)
+  {
+    std::uniform_real_distribution<double> U(-1, 1);
+    for(int j = 0; j <= n; ++j)
+      for(int i = 0; i <= n; ++i) {
+        const bool b = i == 0 || j == 0 || i == n || j == n;
+        uv.push_back({{ (i + (b ? 0 : 0.2 * U(rng))) / n, (j + (b ? 0 : 0.2 * U(rng))) / n }});
+      }
+    for(int j = 0; j < n; ++j)
+      for(int i = 0; i < n; ++i) {
+        const int a = j * (n + 1) + i;
+        faces.push_back(Face{{ a, a + 1, a + n + 2 }});
+        faces.push_back(Face{{ a, a + n + 2, a + n + 1 }});
+      }
+  }
+  bool border(std::size_t v) const { return on_side(int(v) % (n + 1)) || on_side(int(v) / (n + 1)); }
+  bool corner(std::size_t v) const { return on_side(int(v) % (n + 1)) && on_side(int(v) / (n + 1)); }
+
+private:
+  bool on_side(int k) const { return k == 0 || k == n; }
+};
 
 TEST(Planar_gauss_newton, MatrixIsItsDefinition)
 {
   std::mt19937 rng(17);
   std::uniform_real_distribution<double> U(-1, 1);
-  const int n = 5;
-  std::vector<Vec2> uv;
-  std::vector<Face> faces;
-  jittered_grid(n, rng, uv, faces);
+  const Jittered_grid grid(5, rng);
+  const std::vector<Vec2>& uv = grid.uv;
+  const std::vector<Face>& faces = grid.faces;
   std::vector<int> first(uv.size()), count(uv.size());
   std::vector<Vec2> basis;
   for(std::size_t v = 0; v < uv.size(); ++v) {
-    const int i = int(v) % (n + 1), j = int(v) / (n + 1);
-    const bool corner = (i == 0 || i == n) && (j == 0 || j == n);
-    const bool border = i == 0 || j == 0 || i == n || j == n;
     first[v] = int(basis.size());
-    count[v] = corner ? 0 : border ? 1 : 2;
+    count[v] = grid.corner(v) ? 0 : grid.border(v) ? 1 : 2;
     if(count[v] == 1) {
       const double t = U(rng);
       basis.push_back({{ std::cos(t), std::sin(t) }});
@@ -1033,21 +1041,18 @@ TEST(Sobolev_direction, IsMinusTheInverseMetricAppliedToTheGradient)
 {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> U(-1, 1);
-  const int n = 4;
-  std::vector<Vec2> uv;
-  std::vector<Face> faces;
-  jittered_grid(n, rng, uv, faces);
+  const Jittered_grid grid(4, rng);
+  const std::vector<Vec2>& uv = grid.uv;
+  const std::vector<Face>& faces = grid.faces;
   const std::size_t nv = uv.size();
   std::vector<int> boundary_of(nv, -1);
   std::vector<Vec2> tangent(nv, Vec2{{ 0, 0 }}), g(nv);
   int nb = 0;
   for(std::size_t v = 0; v < nv; ++v) {
-    const int i = int(v) % (n + 1), j = int(v) / (n + 1);
-    const bool corner = (i == 0 || i == n) && (j == 0 || j == n);
-    if(i == 0 || j == 0 || i == n || j == n) {
+    if(grid.border(v)) {
       boundary_of[v] = nb++;
       const double t = 3 * U(rng);
-      if(!corner) tangent[v] = {{ std::cos(t), std::sin(t) }};
+      if(!grid.corner(v)) tangent[v] = {{ std::cos(t), std::sin(t) }};
     }
     g[v] = {{ U(rng), U(rng) }};
   }
@@ -1112,10 +1117,9 @@ TEST(Planar_relaxation, SweepKeepsItsEnergyAndLowersIt)
 {
   std::mt19937 rng(23);
   std::uniform_real_distribution<double> U(-1, 1);
-  const int n = 6;
-  std::vector<Vec2> uv;
-  std::vector<Face> faces;
-  jittered_grid(n, rng, uv, faces);
+  const Jittered_grid grid(6, rng);
+  std::vector<Vec2> uv = grid.uv;
+  const std::vector<Face>& faces = grid.faces;
   std::vector<double> target(faces.size());
   for(double& a : target) a = 1 + 0.8 * U(rng); // far from the grid's areas: every vertex has a move
   const D::Area_barrier_energy energy(target);
@@ -1123,8 +1127,7 @@ TEST(Planar_relaxation, SweepKeepsItsEnergyAndLowersIt)
   std::vector<char> movable(uv.size(), 0);
   std::size_t interior = 0;
   for(std::size_t v = 0; v < uv.size(); ++v) {
-    const int i = int(v) % (n + 1), j = int(v) / (n + 1);
-    movable[v] = !(i == 0 || j == 0 || i == n || j == n);
+    movable[v] = !grid.border(v);
     interior += std::size_t(movable[v]);
   }
   std::vector<double> u;
