@@ -24,6 +24,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/disk_problem.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/planar_certified_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/planar_relaxation.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow/coarse_to_fine_levels.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow/flow_driver.h>
 
 #include <chrono>
@@ -36,37 +37,6 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 namespace dlf {
-
-/// Internal knobs of the coarse-to-fine start (doc/coarse_to_fine.md).
-struct Coarse_to_fine_settings
-{
-  /// Coarsen while the level has more than this share of the smallest
-  /// mesh that flows coarse to fine (`coarse_to_fine_faces`): 20,000 faces
-  /// by default, where a factorization costs little.
-  double coarsest_share = 0.2;
-  /// A level that removes less than this share of the vertices left ends the hierarchy.
-  double least_removed = 0.05;
-  /// The coarsest level flows to this share of the caller's tolerance: its
-  /// map carried down loses some of it to the finer faces.
-  double coarse_tolerance_share = 0.5;
-  /// Vertex sweeps on each finer level: first over the vertices put back,
-  /// then over all until D_area − 2 is within `level_goal_share` of the
-  /// caller's tolerance (on the caller's mesh: `finest_goal_share`, so that
-  /// its flow has nothing left to do), or a sweep took off less than
-  /// `least_sweep_gain` of D_area − 2, or `most_sweeps` ran. A sweep costs a
-  /// small fraction of an iteration of the flow (doc/coarse_to_fine.md).
-  std::size_t put_back_sweeps = 2;
-  double finest_goal_share = 0.97;
-  double level_goal_share = 2;
-  double least_sweep_gain = 0.05;
-  std::size_t most_sweeps = 16;
-  /// On the caller's mesh, where a sweep costs 1–2% of an iteration of the flow.
-  double finest_least_sweep_gain = 0.02;
-  std::size_t finest_most_sweeps = 40;
-  /// Regions of the sweeps' split for threads (`Sweep_partition`): fixed,
-  /// so that the map does not depend on the number of threads.
-  std::size_t sweep_parts = 8;
-};
 
 /// Whether the certified flow on a disk of `faces` faces starts coarse to fine.
 inline bool flows_coarse_to_fine(const Discrete_lie_flow_options& opt, std::size_t faces)
@@ -155,29 +125,17 @@ inline double carry_down_level(const Disk_decimation& D, const std::vector<Face>
                                std::vector<Vec2>& fine)
 {
   if(!prolong_disk_level(D, start, fine)) return std::numeric_limits<double>::quiet_NaN();
-  const std::size_t n = fine.size();
   const Area_barrier_energy energy(target);
   std::vector<double> u;
   signed_areas_2(fine, F, u);
-  const Vertex_faces around(n, F);
-  std::vector<char> keep(n, 0);
-  for(int v : D.removed) keep[std::size_t(v)] = 1;
+  const Vertex_faces around(fine.size(), F);
+  std::vector<char> movable(fixed.size());
+  for(std::size_t v = 0; v < fixed.size(); ++v) movable[v] = !fixed[v];
   const double mu = step_fraction(opt);
-  {
-    const Sweep_partition put_back(order, F, s.sweep_parts, &keep);
-    for(std::size_t k = 0; k < s.put_back_sweeps; ++k) relax_planar_vertices(F, around, energy, mu, put_back, threads, fine, u);
-  }
-  for(std::size_t v = 0; v < n; ++v) keep[v] = !fixed[v] && around.first[v + 1] > around.first[v];
-  const Sweep_partition all(order, F, s.sweep_parts, &keep);
-  const std::size_t most = finest ? s.finest_most_sweeps : s.most_sweeps;
-  const double least_gain = finest ? s.finest_least_sweep_gain : s.least_sweep_gain;
-  double E = energy.value(u);
-  for(std::size_t k = 0; k < most && E > goal; ++k) {
-    const Relaxation_outcome r = relax_planar_vertices(F, around, energy, mu, all, threads, fine, u);
-    const double gain = E - r.energy;
-    E = r.energy;
-    if(r.moved == 0 || gain < least_gain * (E + gain - 2)) break;
-  }
+  sweep_finer_level(order, F, around, D.removed, movable, finest, s,
+                    [&](const Sweep_partition& part) { return relax_planar_vertices(F, around, energy, mu, part, threads, fine, u); },
+                    [&] { return energy.value(u); }, [](const Relaxation_outcome& r) { return r.energy; },
+                    [&](double E) { return E <= goal; });
   signed_areas_2(fine, F, u); // the sweeps' incremental sums drop
   return energy.value(u);
 }

@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/certification.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/geometry.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/vertex_relaxation.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow/coarse_to_fine_levels.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -74,25 +75,8 @@ inline bool prolong_disk_level(const Disk_decimation& D, const std::vector<Vec2>
     }
     if(star_positive(p)) { uv[v] = p; continue; }
     // The kernel: the ring's polygon clipped by each edge's half-plane.
-    std::vector<Vec2> poly(ring), next;
-    for(std::size_t i = 0; i < k && poly.size() >= 3; ++i) {
-      const Vec2 &e0 = ring[i], &e1 = ring[(i + 1) % k];
-      const auto side = [&](const Vec2& q) { return (e1[0] - e0[0]) * (q[1] - e0[1]) - (e1[1] - e0[1]) * (q[0] - e0[0]); };
-      next.clear();
-      for(std::size_t j = 0; j < poly.size(); ++j) {
-        const Vec2 &q0 = poly[j], &q1 = poly[(j + 1) % poly.size()];
-        const double s0 = side(q0), s1 = side(q1);
-        if(s0 >= 0) next.push_back(q0);
-        if((s0 > 0 && s1 < 0) || (s0 < 0 && s1 > 0)) {
-          const double t = s0 / (s0 - s1);
-          next.push_back(Vec2{{ q0[0] + t * (q1[0] - q0[0]), q0[1] + t * (q1[1] - q0[1]) }});
-        }
-      }
-      poly.swap(next);
-    }
-    Vec2 c{{ 0, 0 }};
-    for(const Vec2& q : poly) { c[0] += q[0] / double(poly.size()); c[1] += q[1] / double(poly.size()); }
-    if(poly.size() >= 3 && star_positive(c)) { uv[v] = c; continue; }
+    Vec2 c;
+    if(kernel_centroid(ring, c) && star_positive(c)) { uv[v] = c; continue; }
     return false;
   }
   return true;

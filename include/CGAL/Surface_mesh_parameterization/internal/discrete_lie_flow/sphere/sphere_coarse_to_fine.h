@@ -22,6 +22,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/certification.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/morton_order.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/vertex_relaxation.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow/coarse_to_fine_levels.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow/flow_driver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere/sphere_certified_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere/sphere_initial_map.h>
@@ -41,31 +42,14 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace dlf {
 
-/// Internal knobs of the sphere's coarse-to-fine start (doc/sphere.md, "Coarse to fine").
-struct Sphere_coarse_to_fine_settings
+/// Internal knobs of the sphere's coarse-to-fine start (doc/sphere.md,
+/// "Coarse to fine"): the disk's, and how far a collapse may turn a face.
+struct Sphere_coarse_to_fine_settings : Coarse_to_fine_settings
 {
-  /// Coarsen while the level has more than this share of
-  /// `Discrete_lie_flow_sphere_options::coarse_to_fine_faces` faces.
-  double coarsest_share = 0.2;
-  /// A level that removes less than this share of the vertices left ends the hierarchy.
-  double least_removed = 0.05;
   /// A collapse keeps the 3D shape: each new face's normal within this
   /// cosine of the face it replaces (the targets are summed whatever the
   /// shape, but a folded coarse level is a poor model of the fine one).
   double least_normal_cosine = 0.5;
-  /// The coarsest level flows to this share of the caller's tolerance.
-  double coarse_tolerance_share = 0.5;
-  /// Vertex sweeps on each finer level, as the disk's (disk/coarse_to_fine.h).
-  std::size_t put_back_sweeps = 2;
-  double finest_goal_share = 0.97;
-  double level_goal_share = 2;
-  double least_sweep_gain = 0.05;
-  std::size_t most_sweeps = 16;
-  double finest_least_sweep_gain = 0.02;
-  std::size_t finest_most_sweeps = 40;
-  /// Regions of the sweeps' split for threads: fixed, so the map does not
-  /// depend on the number of threads.
-  std::size_t sweep_parts = 8;
 };
 
 /// Whether the certified spherical flow on `faces` faces starts coarse to fine.
@@ -128,7 +112,7 @@ inline bool prolong_sphere_level(const Collapse_decimation& D, const std::vector
 {
   const double pi = 3.14159265358979323846;
   std::vector<Vec3> ring;
-  std::vector<Vec2> flat, poly, next;
+  std::vector<Vec2> flat, poly;
   std::vector<double> angle;
   for(std::size_t r = 0; r < D.removed.size(); ++r) {
     const std::size_t v = std::size_t(D.removed[r]);
@@ -178,25 +162,8 @@ inline bool prolong_sphere_level(const Collapse_decimation& D, const std::vector
       if(!(h > 0)) return false;
       poly[i] = {{ dot(ring[i], e1) / h, dot(ring[i], e2) / h }};
     }
-    const std::vector<Vec2> polygon(poly);
-    for(std::size_t i = 0; i < k && poly.size() >= 3; ++i) {
-      const Vec2 &a0 = polygon[i], &a1 = polygon[(i + 1) % k];
-      const auto side = [&](const Vec2& y) { return (a1[0] - a0[0]) * (y[1] - a0[1]) - (a1[1] - a0[1]) * (y[0] - a0[0]); };
-      next.clear();
-      for(std::size_t j = 0; j < poly.size(); ++j) {
-        const Vec2 &q0 = poly[j], &q1 = poly[(j + 1) % poly.size()];
-        const double s0 = side(q0), s1 = side(q1);
-        if(s0 >= 0) next.push_back(q0);
-        if((s0 > 0 && s1 < 0) || (s0 < 0 && s1 > 0)) {
-          const double t = s0 / (s0 - s1);
-          next.push_back(Vec2{{ q0[0] + t * (q1[0] - q0[0]), q0[1] + t * (q1[1] - q0[1]) }});
-        }
-      }
-      poly.swap(next);
-    }
-    if(poly.size() < 3) return false;
-    Vec2 m{{ 0, 0 }};
-    for(const Vec2& y : poly) { m[0] += y[0] / double(poly.size()); m[1] += y[1] / double(poly.size()); }
+    Vec2 m;
+    if(!kernel_centroid(poly, m)) return false;
     for(int j = 0; j < 3; ++j) q[std::size_t(j)] = c[std::size_t(j)] + m[0] * e1[std::size_t(j)] + m[1] * e2[std::size_t(j)];
     q = normalized(q);
     if(!sphere_star_positive(q, ring)) return false;
@@ -264,32 +231,17 @@ inline double carry_down_sphere_level(const Collapse_decimation& D, const std::v
   signed_areas_sphere(p, F, u);
   cone_areas_sphere(p, F, w);
   const Vertex_faces around(n, F);
-  std::vector<char> keep(n, 0);
-  for(int v : D.removed) keep[std::size_t(v)] = 1;
   const double mu = step_fraction(opt);
-  {
-    const Sweep_partition put_back(order, F, s.sweep_parts, &keep);
-    for(std::size_t k = 0; k < s.put_back_sweeps; ++k)
-      relax_sphere_vertices(F, around, energy, flow.cone_weight, mu, put_back, threads, p, u, w);
-  }
-  for(std::size_t v = 0; v < n; ++v) keep[v] = around.first[v + 1] > around.first[v];
-  const Sweep_partition all(order, F, s.sweep_parts, &keep);
   const double goal = 2 + (finest ? s.finest_goal_share : s.level_goal_share) * opt.tolerance;
-  const std::size_t most = finest ? s.finest_most_sweeps : s.most_sweeps;
-  const double least_gain = finest ? s.finest_least_sweep_gain : s.least_sweep_gain;
-  const auto done = [&](double d) {
-    return d <= goal && (!finest || !(opt.sphere.log_area_tolerance > 0) ||
-                         flat_mean_abs_log_ratio(p, F, target) <= opt.sphere.log_area_tolerance);
-  };
-  double E = flat_d_area(p, F, target);
-  for(std::size_t k = 0; k < most && !done(E); ++k) {
-    const Relaxation_outcome r = relax_sphere_vertices(F, around, energy, flow.cone_weight, mu, all, threads, p, u, w);
-    const double E_new = flat_d_area(p, F, target);
-    const double gain = E - E_new;
-    E = E_new;
-    if(r.moved == 0 || gain < least_gain * (E + gain - 2)) break;
-  }
-  return E;
+  const auto measure = [&] { return flat_d_area(p, F, target); };
+  return sweep_finer_level(
+    order, F, around, D.removed, std::vector<char>(n, 1), finest, s,
+    [&](const Sweep_partition& part) { return relax_sphere_vertices(F, around, energy, flow.cone_weight, mu, part, threads, p, u, w); },
+    measure, [&](const Relaxation_outcome&) { return measure(); },
+    [&](double d) {
+      return d <= goal && (!finest || !(opt.sphere.log_area_tolerance > 0) ||
+                           flat_mean_abs_log_ratio(p, F, target) <= opt.sphere.log_area_tolerance);
+    });
 }
 
 /// Replaces the start `p` of `P` by the coarse-to-fine map when the
