@@ -123,6 +123,8 @@ MUTATIONS=(
   "python|an atlas short of its goals warned without the report's message (the missed goal)|$PY/__init__.py|message = f\"{name}: did not converge: {report['message']}\"|message = f\"{name}: did not converge\"|pytest test_module.py atlas"
   "disk|floating border slides on its outline instead|$DLF/disk/planar_dofs.h|if(curve.kind() == Discrete_lie_flow_border::FLOATING) {|if(false) {|gtest drop_in DropIn.LscmStartKeptOnLionSeams"
   "disk|holes: a hole no point sees whole is never triangulated|$DLF/disk/loop_triangulation.h|  if(!T.add_loop(uv, loop)) return false;|  return false;|gtest drop_in DropIn.HoleNotStarShapedKeepsTheStart"
+  "disk|coarse to fine: a put-back vertex's kernel clipped at the wrong point of an edge|$DLF/flow/coarse_to_fine_levels.h|const double t = s0 / (s0 - s1);|const double t = s1 / (s0 - s1);|gtest numerics Kernel_centroid.*"
+  "disk|coarse to fine: a finer level's sweeps move the fixed border vertices too|$DLF/flow/coarse_to_fine_levels.h|keep[v] = movable[v] && around.first[v + 1] > around.first[v];|keep[v] = around.first[v + 1] > around.first[v];|gtest disk_flow Coarse_to_fine.*"
 )
 
 field() { # field I K: the K-th field (1-based) of mutation I

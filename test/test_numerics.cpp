@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/planar_certified_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/planar_gauss_newton.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/planar_paper_flow.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow/coarse_to_fine_levels.h>
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
@@ -1150,6 +1151,63 @@ TEST(Planar_relaxation, SweepKeepsItsEnergyAndLowersIt)
     EXPECT_LT(E_fresh, E) << "sweep " << sweep;
     E = E_fresh;
   }
+}
+
+// The kernel of a ring polygon (where a vertex put back into its ring sees
+// every ring edge from the inside) against the corners found here from the
+// edges' lines: every pairwise intersection inside all the half-planes.
+TEST(Kernel_centroid, MatchesTheHalfPlanesCorners)
+{
+  const auto corners_centroid = [](const std::vector<Vec2>& ring, Vec2& c) {
+    const std::size_t k = ring.size();
+    std::vector<Vec2> corners;
+    for(std::size_t i = 0; i < k; ++i)
+      for(std::size_t j = i + 1; j < k; ++j) {
+        const Vec2 &a = ring[i], &b = ring[(i + 1) % k], &p = ring[j], &q = ring[(j + 1) % k];
+        const double den = (b[0] - a[0]) * (q[1] - p[1]) - (b[1] - a[1]) * (q[0] - p[0]);
+        if(std::abs(den) < 1e-14) continue;
+        const double t = ((p[0] - a[0]) * (q[1] - p[1]) - (p[1] - a[1]) * (q[0] - p[0])) / den;
+        const Vec2 x{{ a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]) }};
+        bool inside = true;
+        for(std::size_t e = 0; e < k && inside; ++e) {
+          const Vec2 &e0 = ring[e], &e1 = ring[(e + 1) % k];
+          inside = (e1[0] - e0[0]) * (x[1] - e0[1]) - (e1[1] - e0[1]) * (x[0] - e0[0]) > -1e-12;
+        }
+        bool seen = false;
+        for(const Vec2& y : corners) seen = seen || (std::abs(y[0] - x[0]) < 1e-12 && std::abs(y[1] - x[1]) < 1e-12);
+        if(inside && !seen) corners.push_back(x);
+      }
+    if(corners.size() < 3) return false;
+    c = Vec2{{ 0, 0 }};
+    for(const Vec2& y : corners) { c[0] += y[0] / double(corners.size()); c[1] += y[1] / double(corners.size()); }
+    return true;
+  };
+  // A convex hexagon (its kernel is itself), an arrow head with a reflex
+  // corner, a star with five reflex corners, and a spiral-like hook whose
+  // kernel is empty.
+  std::vector<std::vector<Vec2> > rings;
+  {
+    std::vector<Vec2> hexagon, star;
+    for(int i = 0; i < 6; ++i) hexagon.push_back({{ std::cos(i * 1.0471975511965976), 1.3 * std::sin(i * 1.0471975511965976) }});
+    for(int i = 0; i < 10; ++i) {
+      const double r = i % 2 == 0 ? 1 : 0.45, a = i * 0.6283185307179586 + 0.1;
+      star.push_back({{ r * std::cos(a), r * std::sin(a) }});
+    }
+    rings.push_back(hexagon);
+    rings.push_back({ {{ 0, 0 }}, {{ 2, 1 }}, {{ 0, 2 }}, {{ 0.8, 1 }} });
+    rings.push_back(star);
+  }
+  for(std::size_t r = 0; r < rings.size(); ++r) {
+    Vec2 expected, got;
+    ASSERT_TRUE(corners_centroid(rings[r], expected)) << "ring " << r;
+    ASSERT_TRUE(D::kernel_centroid(rings[r], got)) << "ring " << r;
+    EXPECT_NEAR(got[0], expected[0], 1e-12) << "ring " << r;
+    EXPECT_NEAR(got[1], expected[1], 1e-12) << "ring " << r;
+  }
+  const std::vector<Vec2> hook{ {{ 0, 0 }}, {{ 3, 0 }}, {{ 3, 3 }}, {{ 0, 3 }}, {{ 0, 2 }}, {{ 2, 2 }}, {{ 2, 1 }}, {{ 0, 1 }} };
+  Vec2 c, unused;
+  EXPECT_FALSE(corners_centroid(hook, unused));
+  EXPECT_FALSE(D::kernel_centroid(hook, c)) << "the hook has no kernel";
 }
 
 } // namespace dlf_test_numerics
