@@ -5,11 +5,12 @@
 #   benchmark/paper.sh --quick            # small meshes only: doc/paper_quick.md (about a minute)
 #   benchmark/paper.sh --quick --check    # exit 1 when doc/paper_quick.md no longer matches the code
 #   benchmark/paper.sh --parts tables,figures   # some parts of the full run only
-#                                         # (literal, tables, pictures, figures, sphere, quick)
+#                                         # (literal, tables, paper_mode, pictures, figures, sphere, quick)
 #
 # The full run regenerates, with no manual step:
 #   doc/paper_literal.md      Table 2 with the literal Algorithm 1 (benchmark/literal.sh)
 #   doc/paper_experiments.md  Tables 3, 4, 5, 6 and Figs. 17-18 against the OT peer (benchmark/paper_tables.sh)
+#   doc/paper_mode.md         the stabilised flow on every disk mesh (benchmark/paper_runs.py)
 #   doc/paper_figures.md      Table 2 again with μ 0.2-0.8 and Figs. 12-13's steps, Tables 3-5's three
 #                             flows, Figs. 8-9's and 17-18's starts, Figs. 10, 14, 15-16 (benchmark/paper_runs.py)
 #   doc/paper_sphere.md       the paper mode on every closed genus-0 mesh (benchmark/sphere_paper.sh)
@@ -28,7 +29,7 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
 args="$*"
-quick=0 check=0 parts=literal,tables,pictures,figures,sphere,quick
+quick=0 check=0 parts=literal,tables,paper_mode,pictures,figures,sphere,quick
 while [[ $# -gt 0 ]]; do
   case $1 in
     --quick) quick=1 ;;
@@ -115,7 +116,7 @@ runs() { # SIZE SECTION...: paper_runs.py's Markdown
   python3 benchmark/paper_runs.py "$DLF" "$MESHES" "$@"
 }
 
-quick_sections=(table2 mu modes sphere_starts disk_starts fig10 fig14 fig15_16)
+quick_sections=(paper_mode table2 mu modes sphere_starts disk_starts fig10 fig14 fig15_16)
 
 if [[ $quick == 1 ]]; then
   t0=$(date +%s)
@@ -154,8 +155,12 @@ if part pictures; then
   DLF=$DLF MESHES=$MESHES benchmark/fig14.sh > /dev/null
   DLF=$DLF MESHES=$MESHES benchmark/fig15_16.sh > /dev/null
 fi
+if part paper_mode; then
+  { header "benchmark/paper_runs.py full paper_mode"; runs full paper_mode; } > "$tmp/part.md"
+  write_part paper_mode paper_mode "Paper mode" "$tmp/part.md"
+fi
 if part figures; then
-  for s in "${quick_sections[@]}"; do
+  for s in table2 mu modes sphere_starts disk_starts fig10 fig14 fig15_16; do
     { header "benchmark/paper_runs.py full $s"; runs full "$s"; } > "$tmp/part.md"
     write_part paper_figures "$s" "The paper's figures and Table 2's variants, with the dlf tool" "$tmp/part.md"
   done

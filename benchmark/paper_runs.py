@@ -3,7 +3,7 @@
 
     paper_runs.py DLF MESHES {quick,full} SECTION...
 
-Sections: table2 (Table 2, Figs. 12-13: the literal Algorithm 1, fixed steps
+Sections: paper_mode (the stabilised flow on every disk mesh), table2 (Table 2, Figs. 12-13: the literal Algorithm 1, fixed steps
 against the adaptive step), mu (Table 2's adaptive column for mu 0.2-0.8),
 modes (Tables 3-5: the certified, paper and literal flows on the peers'
 meshes, same start), sphere_starts (Figs. 8-9: the sphere from the Tutte and
@@ -33,7 +33,7 @@ CFG = {
         "mu": ["nefertiti", "patch-23"], "mu_cap": 2000,
         "disk": ["nefertiti", "patch-23"], "sphere": ["sphere"],
         "fig14": "nefertiti", "fig15_disk": "nefertiti", "fig15_sphere": "sphere",
-        "factors": ["0.25", "1", "4", "16"], "fig10_cells": 8,
+        "factors": ["0.25", "1", "4", "16"], "fig10_cells": 8, "paper_mode": ["nefertiti", "patch-23"],
     },
     "full": {
         "table2": ["nefertiti", "patch-23", "blob", "patch-30", "plane", "mushroom", "lion-head", "mannequin-devil"],
@@ -43,7 +43,7 @@ CFG = {
         "disk": ["nefertiti", "patch-30", "plane", "three_peaks", "mushroom", "lion-head", "mannequin-devil"],
         "sphere": ["sphere", "triceratops", "cow", "homer", "bear", "armadillo"],
         "fig14": "nefertiti", "fig15_disk": "nefertiti", "fig15_sphere": "blobby",
-        "factors": ["0.25", "0.5", "1", "2", "4", "8", "16"], "fig10_cells": 16,
+        "factors": ["0.25", "0.5", "1", "2", "4", "8", "16"], "fig10_cells": 16, "paper_mode": None,
     },
 }[SIZE]
 
@@ -289,7 +289,44 @@ def fig15_16():
     return out
 
 
-RUN = {"table2": table2, "mu": mu, "modes": modes, "sphere_starts": lambda: starts("sphere"),
+def disk_meshes():
+    """Every disk mesh of the data set with one border loop and at least 100 faces."""
+    names = []
+    for f in sorted(os.listdir(MESHES)):
+        if not f.endswith(".off"):
+            continue
+        rep = os.path.join(TMP, "info.json")
+        if subprocess.run([DLF, "info", os.path.join(MESHES, f), "-q", "--report", rep],
+                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL).returncode != 0:
+            continue
+        j = json.load(open(rep))
+        if j["fits"] == "dlf disk" and j["faces"] >= 100 and j["border_loops"] == 1:
+            names.append(f[:-4])
+    return names
+
+
+def paper_mode():
+    meshes = CFG["paper_mode"] or disk_meshes()
+    out = ["### The paper mode on the disk meshes, both borders and both starts", "",
+           "`dlf disk MESH --mode paper --border circle|square --init tutte|mvc`, default settings. D_area of the "
+           "flowing triangulation, start → returned; caller folds: the input triangles inverted or degenerate at the "
+           "final positions (exact); flips: edge flips in total.", "",
+           "| mesh | faces | border | start | stop | iterations | D_area start → returned | caller folds | flips |",
+           "|---|---:|---|---|---|---:|---|---:|---:|"]
+    for m in meshes:
+        for border in ("circle", "square"):
+            for init, label in (("tutte", "Tutte"), ("mvc", "mean value")):
+                r = dlf("disk", off(m), "--mode", "paper", "--border", border, "--init", init)
+                if r is None:
+                    out.append(f"| {m} | | {border} | {label} | error | | | | |")
+                    continue
+                out.append(f"| {m} | {r['faces']:,} | {border} | {label} | {r['stop_reason']} | {r['iterations']} | "
+                           f"{g(r['initial_domain_d_area'])} → {g(r['domain_d_area'])} | {folds(r)} | {r.get('flips', '—')} |")
+    out.append("")
+    return out
+
+
+RUN = {"paper_mode": paper_mode, "table2": table2, "mu": mu, "modes": modes, "sphere_starts": lambda: starts("sphere"),
        "disk_starts": lambda: starts("disk"), "fig10": fig10, "fig14": fig14, "fig15_16": fig15_16}
 for s in SECTIONS:
     if s not in RUN:
