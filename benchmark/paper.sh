@@ -14,6 +14,7 @@
 #   doc/paper_figures.md      Table 2 again with μ 0.2-0.8 and Figs. 12-13's steps, Tables 3-5's three
 #                             flows, Figs. 8-9's and 17-18's starts, Figs. 10, 14, 15-16 (benchmark/paper_runs.py)
 #   doc/paper_sphere.md       the paper mode on every closed genus-0 mesh (benchmark/sphere_paper.sh)
+#                             and the literal Algorithm 1 on the sphere (benchmark/paper_runs.py)
 #   doc/images/fig10_*.svg, fig14_*.svg, fig15_16_*.svg (benchmark/fig10.sh, fig14.sh, fig15_16.sh)
 # Each generated part starts with the command, the commit, the processor, the
 # compiler and the versions of CGAL, Eigen, SuiteSparse and OpenBLAS (and
@@ -116,7 +117,7 @@ runs() { # SIZE SECTION...: paper_runs.py's Markdown
   python3 benchmark/paper_runs.py "$DLF" "$MESHES" "$@"
 }
 
-quick_sections=(paper_mode table2 mu modes sphere_starts disk_starts fig10 fig14 fig15_16)
+quick_sections=(paper_mode sphere_literal table2 mu modes sphere_starts disk_starts fig10 fig14 fig15_16)
 
 if [[ $quick == 1 ]]; then
   t0=$(date +%s)
@@ -167,7 +168,9 @@ if part figures; then
 fi
 if part sphere; then
   { header "benchmark/sphere_paper.sh"; echo; benchmark/sphere_paper.sh "$DLF" "$MESHES" | sed "s|$root/||g"; echo; } > "$tmp/part.md"
-  write_part paper_sphere sphere_paper "The paper mode on CGAL's closed genus-0 meshes" "$tmp/part.md"
+  write_part paper_sphere sphere_paper "The paper's flow on CGAL's closed genus-0 meshes" "$tmp/part.md"
+  { header "benchmark/paper_runs.py full sphere_literal"; runs full sphere_literal; } > "$tmp/part.md"
+  write_part paper_sphere sphere_literal "The paper's flow on CGAL's closed genus-0 meshes" "$tmp/part.md"
 fi
 if part quick; then
   runs quick "${quick_sections[@]}" > "$tmp/body.md"
