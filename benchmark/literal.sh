@@ -109,7 +109,7 @@ def outcome(r):
 out = []
 # benchmark/paper.sh heads the part with the machine and the libraries.
 if os.environ.get("PAPER_HEADER_FILE"):
-    out.append(open(os.environ["PAPER_HEADER_FILE"]).read())
+    out.append(open(os.environ["PAPER_HEADER_FILE"]).read().rstrip("\n") + "\n")
 out.append("Command: `benchmark/literal.sh` (`dlf disk MESH --mode literal --border B "
            f"[--fixed-step X] --max-iterations {cap}`, Tutte start). Iterations to the stop rule "
            "‖h_M − h_Ω‖² < 1e-3; `c (k)`: collapsed after k accepted steps (the paper's `c`); "

@@ -5,7 +5,8 @@
 #   benchmark/paper.sh --quick            # small meshes only: doc/paper_quick.md (about a minute)
 #   benchmark/paper.sh --quick --check    # exit 1 when doc/paper_quick.md no longer matches the code
 #   benchmark/paper.sh --parts tables,figures   # some parts of the full run only
-#                                         # (literal, tables, paper_mode, pictures, figures, sphere, quick)
+#                                         # (literal, tables, paper_mode, pictures, figures, sphere, quick;
+#                                         # or one part of figures: table2, mu, modes, sphere_starts, ...)
 #
 # The full run regenerates, with no manual step:
 #   doc/paper_literal.md      Table 2 with the literal Algorithm 1 (benchmark/literal.sh)
@@ -160,12 +161,12 @@ if part paper_mode; then
   { header "benchmark/paper_runs.py full paper_mode"; runs full paper_mode; } > "$tmp/part.md"
   write_part paper_mode paper_mode "Paper mode" "$tmp/part.md"
 fi
-if part figures; then
-  for s in table2 mu modes sphere_starts disk_starts fig10 fig14 fig15_16; do
+for s in table2 mu modes sphere_starts disk_starts fig10 fig14 fig15_16; do
+  if part figures || part "$s"; then
     { header "benchmark/paper_runs.py full $s"; runs full "$s"; } > "$tmp/part.md"
     write_part paper_figures "$s" "The paper's figures and Table 2's variants, with the dlf tool" "$tmp/part.md"
-  done
-fi
+  fi
+done
 if part sphere; then
   { header "benchmark/sphere_paper.sh"; echo; benchmark/sphere_paper.sh "$DLF" "$MESHES" | sed "s|$root/||g"; echo; } > "$tmp/part.md"
   write_part paper_sphere sphere_paper "The paper's flow on CGAL's closed genus-0 meshes" "$tmp/part.md"

@@ -145,6 +145,8 @@ def mu():
 def mode_row(r):
     if r is None:
         return "error | | | |"
+    if r["stop_reason"] == "not_run":  # the start refused, e.g. ERROR_INITIAL_MAP_FOLDED
+        return f"not run: {r['status']} | | | |"
     d = (r.get("final") or {}).get("d_area")
     return f"{r['stop_reason']} | {r['iterations']} | {g(d)} | {folds(r)}"
 
