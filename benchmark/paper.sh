@@ -170,7 +170,7 @@ for s in table2 mu modes sphere_starts disk_starts fig10 fig14 fig15_16; do
   fi
 done
 if part sphere; then
-  { header "benchmark/sphere_paper.sh"; echo; benchmark/sphere_paper.sh "$DLF" "$MESHES" | sed "s|$root/||g"; echo; } > "$tmp/part.md"
+  { header "benchmark/sphere_paper.sh"; benchmark/sphere_paper.sh "$DLF" "$MESHES" | sed "s|$root/||g"; echo; } > "$tmp/part.md"
   write_part paper_sphere sphere_paper "The paper's flow on CGAL's closed genus-0 meshes" "$tmp/part.md"
   { header "benchmark/paper_runs.py full sphere_literal"; runs full sphere_literal; } > "$tmp/part.md"
   write_part paper_sphere sphere_literal "The paper's flow on CGAL's closed genus-0 meshes" "$tmp/part.md"
