@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The paper's experiments, every page, by one command.
 #
-#   benchmark/paper.sh                    # every page (hours on a busy 2-core machine)
-#   benchmark/paper.sh --quick            # small meshes only: doc/paper_quick.md (about a minute)
+#   benchmark/paper.sh                    # every page (about an hour on a busy 2-core machine)
+#   benchmark/paper.sh --quick            # small meshes only: doc/paper_quick.md (about 10 s)
 #   benchmark/paper.sh --quick --check    # exit 1 when doc/paper_quick.md no longer matches the code
 #   benchmark/paper.sh --parts tables,figures   # some parts of the full run only
 #                                         # (literal, tables, paper_mode, pictures, figures, sphere, quick;
@@ -37,7 +37,7 @@ while [[ $# -gt 0 ]]; do
     --quick) quick=1 ;;
     --check) check=1 ;;
     --parts) parts=${2:?--parts needs a list}; shift ;;
-    -h|--help) sed -n '2,27p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0"; exit 0 ;;
     *) echo "paper.sh: unknown option $1 (--quick, --check, --parts)" >&2; exit 2 ;;
   esac
   shift
