@@ -35,7 +35,7 @@ for name in "${names[@]}"; do
   rc=0
   "$dlf" sphere "$meshes/$name" --mode paper --report "$report" -q "$@" 2> "$tmp/err.txt" || rc=$?
   if [ "$rc" -ne 0 ] && [ "$rc" -ne 3 ]; then
-    echo "| $name | | error: $(head -c 200 "$tmp/err.txt" | tr '\n|' '  ') | | | | | | | | |"
+    echo "| $name | | error: $(sed "s|$meshes/||g" "$tmp/err.txt" | head -c 200 | tr '\n|' '  ') | | | | | | | | |"
     continue
   fi
   python3 - "$name" "$report" << 'EOF'
