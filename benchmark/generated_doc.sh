@@ -42,6 +42,8 @@ run_into_doc() {
     --markdown "$tmp/tables.md" "$@" > "$tmp/stdout.txt"
 
   {
+    # benchmark/paper.sh heads the part with the machine and the libraries.
+    if [ -n "${PAPER_HEADER_FILE:-}" ]; then cat "$PAPER_HEADER_FILE"; fi
     echo "Library: commit $head$( [ "$dirty" -gt 0 ] && echo " + $dirty uncommitted file(s) under include/" || echo " (include/ clean)"), include/ sha1 $headers, built $built."
     echo
     echo "Command: \`$script${*:+ $*}\` (runs \`$program\` with the options below)."

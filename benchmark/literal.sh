@@ -95,7 +95,7 @@ for mesh in "$MESHES"/*.off; do
 done
 
 python3 - "$rows" "$DOC" "$FIXED" "$MAX_IT" <<'EOF'
-import json, re, sys
+import json, os, re, sys
 rows = [json.loads(l) for l in open(sys.argv[1])]
 doc, fixed, cap = sys.argv[2], sys.argv[3].split(), int(sys.argv[4])
 json.dump(rows, open(doc.replace(".md", ".json"), "w"), indent=1)
@@ -107,6 +107,9 @@ def outcome(r):
     if s == "iteration_cap": return f">{cap}"
     return f"{s} ({r['iterations']})"
 out = []
+# benchmark/paper.sh heads the part with the machine and the libraries.
+if os.environ.get("PAPER_HEADER_FILE"):
+    out.append(open(os.environ["PAPER_HEADER_FILE"]).read().rstrip("\n") + "\n")
 out.append("Command: `benchmark/literal.sh` (`dlf disk MESH --mode literal --border B "
            f"[--fixed-step X] --max-iterations {cap}`, Tutte start). Iterations to the stop rule "
            "‖h_M − h_Ω‖² < 1e-3; `c (k)`: collapsed after k accepted steps (the paper's `c`); "

@@ -3,12 +3,12 @@
 //
 // The paper's comparison tables on CGAL's data set (doc/paper_experiments.md):
 //
-// - Tables 3, 4 and 6, Figs. 17-18: DLF on the circle (default and paper
-//   mode) against a semi-discrete optimal transport map (ot_disk.h), all
+// - Tables 3, 4 and 6, Figs. 17-18: DLF on the circle (default, paper and
+//   literal mode) against a semi-discrete optimal transport map (ot_disk.h), all
 //   from the same initial map (the library's default Tutte map): time,
 //   D_area, symmetric Dirichlet, ARAP, folds, the transport cost of each map
 //   from the start, and the Beltrami coefficients of ψ = φ_DLF ∘ φ_OT⁻¹;
-// - Table 5: the spherical DLF (default and paper mode) on the closed
+// - Table 5: the spherical DLF (default, paper and literal mode) on the closed
 //   genus-0 meshes: time, Area_total and D_area.
 //
 // `--check` instead runs the checks of the optimal-transport solver (the
@@ -205,6 +205,20 @@ static std::vector<std::size_t> beltrami_histogram(const std::vector<D::Vec2>& a
 // Disk: DLF against optimal transport
 // ---------------------------------------------------------------------------
 
+/// The flows beside each peer: the default (certified) mode, the stabilised
+/// paper flow and Algorithm 1 as printed (`literal`).
+struct Paper_tables_mode
+{
+  const char* key;
+  const char* label;
+  SMP::Discrete_lie_flow_mode mode;
+};
+static const Paper_tables_mode paper_tables_modes[] = {
+  { "dlf", "default", SMP::Discrete_lie_flow_mode::CERTIFIED },
+  { "dlf_paper", "paper", SMP::Discrete_lie_flow_mode::PAPER },
+  { "dlf_literal", "literal", SMP::Discrete_lie_flow_mode::LITERAL },
+};
+
 struct Dlf_run
 {
   bool ok = false;
@@ -280,9 +294,8 @@ static json disk_case(const std::string& spec, const SM& mesh, double tolerance)
               { "metrics", metrics_json(SMP::discrete_lie_flow_distortion(idx.xyz, uv_ot, idx.faces)) },
               { "from_start", difference_json(SMP::discrete_lie_flow_map_difference(idx.xyz, uv0, uv_ot, idx.faces)) } };
 
-  for(const auto& mode : { std::make_pair("dlf", SMP::Discrete_lie_flow_mode::CERTIFIED),
-                           std::make_pair("dlf_paper", SMP::Discrete_lie_flow_mode::PAPER) }) {
-    Dlf_run r = run_dlf(mesh, bhd, mode.second);
+  for(const Paper_tables_mode& mode : paper_tables_modes) {
+    Dlf_run r = run_dlf(mesh, bhd, mode.mode);
     json d = { { "status", r.status }, { "iterations", r.iterations }, { "seconds", r.seconds } };
     if(r.ok) {
       to_unit_disk(r.uv, border);
@@ -291,7 +304,7 @@ static json disk_case(const std::string& spec, const SM& mesh, double tolerance)
       d["against_ot"] = difference_json(SMP::discrete_lie_flow_map_difference(idx.xyz, uv_ot, r.uv, idx.faces));
       d["beltrami_histogram"] = beltrami_histogram(uv_ot, r.uv, idx.faces);
     }
-    j[mode.first] = d;
+    j[mode.key] = d;
   }
   return j;
 }
@@ -338,6 +351,15 @@ static double region_share(const std::vector<D::Vec2>& uv, const std::vector<D::
   return region / total;
 }
 
+/// Table 6's metric as printed: the plain sum over the vertices of the
+/// squared distance between two maps (no area weights, no square root).
+static double sum_of_squares(const std::vector<D::Vec2>& a, const std::vector<D::Vec2>& b)
+{
+  double s = 0;
+  for(std::size_t i = 0; i < a.size(); ++i) s += (a[i][0] - b[i][0]) * (a[i][0] - b[i][0]) + (a[i][1] - b[i][1]) * (a[i][1] - b[i][1]);
+  return s;
+}
+
 /// The paper's Figs. 17-18 proper: a region scaled by each factor, mapped by
 /// DLF (both modes, the density on the region) and by the OT peer (the
 /// density in its source masses), from the same start; the regions' shares
@@ -372,20 +394,21 @@ static json measure_case(const std::string& spec, const SM& mesh, const std::vec
     const std::vector<D::Vec2> uv_ot(R.centroid.begin(), R.centroid.end());
     row["ot"] = { { "converged", R.converged }, { "newton_iterations", R.newton_iterations },
                   { "gradient_relative", R.gradient_relative }, { "share", region_share(uv_ot, idx.faces, region) },
-                  { "folds", SMP::discrete_lie_flow_distortion(idx.xyz, uv_ot, idx.faces).inverted_faces } };
-    for(const auto& mode : { std::make_pair("dlf", SMP::Discrete_lie_flow_mode::CERTIFIED),
-                             std::make_pair("dlf_paper", SMP::Discrete_lie_flow_mode::PAPER) }) {
-      Dlf_run r = run_dlf(mesh, bhd, mode.second, rho);
+                  { "folds", SMP::discrete_lie_flow_distortion(idx.xyz, uv_ot, idx.faces).inverted_faces },
+                  { "sum_of_squares", sum_of_squares(uv0, uv_ot) } };
+    for(const Paper_tables_mode& mode : paper_tables_modes) {
+      Dlf_run r = run_dlf(mesh, bhd, mode.mode, rho);
       json d = { { "status", r.status }, { "iterations", r.iterations } };
       if(r.ok) {
         to_unit_disk(r.uv, border);
         const SMP::Discrete_lie_flow_distortion m = SMP::discrete_lie_flow_distortion(idx.xyz, r.uv, idx.faces);
         d["share"] = region_share(r.uv, idx.faces, region);
+        d["sum_of_squares"] = sum_of_squares(uv0, r.uv);
         d["folds"] = m.inverted_faces + m.degenerate_faces;
         d["against_ot"] = difference_json(SMP::discrete_lie_flow_map_difference(idx.xyz, uv_ot, r.uv, idx.faces));
         d["beltrami_histogram"] = beltrami_histogram(uv_ot, r.uv, idx.faces);
       }
-      row[mode.first] = d;
+      row[mode.key] = d;
     }
     j["rows"].push_back(row);
   }
@@ -402,12 +425,11 @@ static json sphere_case(const std::string& spec, const SM& mesh)
   j["mesh"] = spec;
   j["vertices"] = num_vertices(mesh);
   j["faces"] = num_faces(mesh);
-  for(const auto& mode : { std::make_pair("dlf", SMP::Discrete_lie_flow_mode::CERTIFIED),
-                           std::make_pair("dlf_paper", SMP::Discrete_lie_flow_mode::PAPER) }) {
+  for(const Paper_tables_mode& mode : paper_tables_modes) {
     SM m = mesh;
     Sphere_map smap = m.add_property_map<vertex_descriptor, K::Point_3>("v:sphere", K::Point_3(0, 0, 0)).first;
     SMP::Discrete_lie_flow_options opt;
-    opt.mode = mode.second;
+    opt.mode = mode.mode;
     SMP::Discrete_lie_flow_sphere_parameterizer_3<SM> p(opt);
     const Clock::time_point t0 = Clock::now();
     const SMP::Error_code err = p.parameterize(m, smap);
@@ -420,7 +442,7 @@ static json sphere_case(const std::string& spec, const SM& mesh)
       const SMP::Discrete_lie_flow_distortion init = p.report().initial_metrics;
       d["initial"] = metrics_json(init);
     }
-    j[mode.first] = d;
+    j[mode.key] = d;
   }
   return j;
 }
@@ -519,32 +541,40 @@ static void write_markdown(std::ostream& md, const json& doc)
      << sci(doc["ot_tolerance"].get<double>()) << ".\n\n";
 
   md << "### Tables 3 and 4: DLF (circle) against optimal transport, from the same Tutte start\n\n"
-     << "| mesh | faces | vertices | OT Newton | OT rel. gradient | OT s | DLF s | DLF paper s | OT D_area | DLF D_area | DLF paper D_area | OT folds | DLF folds | DLF paper folds |\n"
-     << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+     << "DLF in three modes: the default (certified), the stabilised paper flow (paper) and Algorithm 1 as printed (literal).\n\n"
+     << "| mesh | faces | vertices | OT Newton | OT rel. gradient | OT s | DLF s | DLF paper s | DLF literal s | OT D_area | DLF D_area | DLF paper D_area | DLF literal D_area | OT folds | DLF folds | DLF paper folds | DLF literal folds |\n"
+     << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   const auto folds = [](const json& m) { return std::to_string(m["inverted_faces"].get<std::size_t>() + m["degenerate_faces"].get<std::size_t>()); };
   const auto dval = [](const json& run, const char* key) { return run.contains("metrics") ? fmt(run["metrics"][key].get<double>(), 4) : std::string("—"); };
   for(const json& c : doc["disk"]) {
     if(c.contains("error")) { md << "| " << c["mesh"].get<std::string>() << " | " << c["error"].get<std::string>() << " |\n"; continue; }
-    const json &o = c["ot"], &d = c["dlf"], &p = c["dlf_paper"];
+    const json& o = c["ot"];
     md << "| " << c["mesh"].get<std::string>() << " | " << c["faces"] << " | " << c["vertices"] << " | "
        << o["newton_iterations"] << (o["converged"].get<bool>() ? "" : " (" + o["message"].get<std::string>() + ")") << " | "
-       << sci(o["gradient_relative"].get<double>()) << " | " << fmt_time(o["seconds"].get<double>()) << " | "
-       << fmt_time(d["seconds"].get<double>()) << " | " << fmt_time(p["seconds"].get<double>()) << " | "
-       << fmt(o["metrics"]["d_area"].get<double>(), 4) << " | " << dval(d, "d_area") << " | " << dval(p, "d_area") << " | "
-       << folds(o["metrics"]) << " | " << (d.contains("metrics") ? folds(d["metrics"]) : "—") << " | "
-       << (p.contains("metrics") ? folds(p["metrics"]) : "—") << " |\n";
+       << sci(o["gradient_relative"].get<double>()) << " | " << fmt_time(o["seconds"].get<double>()) << " | ";
+    for(const Paper_tables_mode& pm : paper_tables_modes) md << fmt_time(c[pm.key]["seconds"].get<double>()) << " | ";
+    md << fmt(o["metrics"]["d_area"].get<double>(), 4) << " | ";
+    for(const Paper_tables_mode& pm : paper_tables_modes) md << dval(c[pm.key], "d_area") << " | ";
+    md << folds(o["metrics"]) << " |";
+    for(const Paper_tables_mode& pm : paper_tables_modes)
+      md << " " << (c[pm.key].contains("metrics") ? folds(c[pm.key]["metrics"]) : "—") << " |";
+    md << "\n";
   }
   md << "\nDLF times are the whole `parameterize()` call (initial map + flow); OT times are the Newton solve "
-        "after the same initial map. DLF status (iterations): ";
-  for(const json& c : doc["disk"]) if(!c.contains("error"))
-    md << c["mesh"].get<std::string>() << " " << c["dlf"]["status"].get<std::string>() << " (" << c["dlf"]["iterations"] << "), paper "
-       << c["dlf_paper"]["status"].get<std::string>() << " (" << c["dlf_paper"]["iterations"] << "); ";
+        "after the same initial map. DLF status (iterations), default, paper, literal: ";
+  for(const json& c : doc["disk"]) if(!c.contains("error")) {
+    md << c["mesh"].get<std::string>();
+    for(const Paper_tables_mode& pm : paper_tables_modes)
+      md << " " << c[pm.key]["status"].get<std::string>() << " (" << c[pm.key]["iterations"] << ")";
+    md << "; ";
+  }
   md << "\n\n#### Energies (Table 4's columns, and the added metrics)\n\n"
      << "| mesh | method | D_area | SD | ARAP | Table 1 W | mean \\|μ\\| |\n|---|---|---:|---:|---:|---:|---:|\n";
   for(const json& c : doc["disk"]) {
     if(c.contains("error")) continue;
     for(const auto& name : { std::make_pair("initial", "Tutte start"), std::make_pair("ot", "OT"),
-                             std::make_pair("dlf", "DLF"), std::make_pair("dlf_paper", "DLF paper") }) {
+                             std::make_pair("dlf", "DLF"), std::make_pair("dlf_paper", "DLF paper"),
+                             std::make_pair("dlf_literal", "DLF literal") }) {
       const json& run = std::string(name.first) == "initial" ? json{ { "metrics", c["initial"] } } : c[name.first];
       if(!run.contains("metrics")) continue;
       const json& m = run["metrics"];
@@ -556,8 +586,8 @@ static void write_markdown(std::ostream& md, const json& doc)
 
   md << "\n### Table 6: transport cost from the start, DLF against OT\n\n"
      << "Cost: `√(Σ_i m_i |φ(v_i) − φ_0(v_i)|²)` on the unit disk, `m_i` the lumped area shares, `φ_0` the Tutte start.\n\n"
-     << "| mesh | DLF | OT | difference | DLF paper | difference | OT semi-discrete W2 | DLF − OT vertex distance |\n"
-     << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+     << "| mesh | DLF | OT | difference | DLF paper | difference | DLF literal | difference | OT semi-discrete W2 | DLF − OT vertex distance |\n"
+     << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for(const json& c : doc["disk"]) {
     if(c.contains("error")) continue;
     const double o = c["ot"]["from_start"]["transport_cost"].get<double>();
@@ -571,6 +601,7 @@ static void write_markdown(std::ostream& md, const json& doc)
     };
     cost_cells(c["dlf"]);
     cost_cells(c["dlf_paper"]);
+    cost_cells(c["dlf_literal"]);
     md << " | " << fmt(c["ot"]["semi_discrete_w2"].get<double>(), 5) << " | "
        << (c["dlf"].contains("against_ot") ? fmt(c["dlf"]["against_ot"]["transport_cost"].get<double>(), 5) : "—") << " |\n";
   }
@@ -584,11 +615,12 @@ static void write_markdown(std::ostream& md, const json& doc)
   md << "\n";
   for(const json& c : doc["disk"]) {
     if(c.contains("error")) continue;
-    for(const char* mode : { "dlf", "dlf_paper" }) {
+    for(const Paper_tables_mode& pm : paper_tables_modes) {
+      const char* mode = pm.key;
       const json& run = c[mode];
       if(!run.contains("against_ot")) continue;
       const json& a = run["against_ot"];
-      md << "| " << c["mesh"].get<std::string>() << " | " << (std::string(mode) == "dlf" ? "default" : "paper") << " | "
+      md << "| " << c["mesh"].get<std::string>() << " | " << pm.label << " | "
          << fmt(a["beltrami_mean"].get<double>(), 4) << " | " << fmt(a["beltrami_weighted_mean"].get<double>(), 4) << " | "
          << fmt(a["beltrami_max"].get<double>(), 3) << " |";
       const double F = c["faces"].get<double>();
@@ -617,10 +649,11 @@ static void write_markdown(std::ostream& md, const json& doc)
         continue;
       }
       const json& o = row["ot"];
-      for(const char* mode : { "dlf", "dlf_paper" }) {
+      for(const Paper_tables_mode& pm : paper_tables_modes) {
+      const char* mode = pm.key;
         const json& r = row[mode];
         md << "| " << c["mesh"].get<std::string>() << " | " << fmt(row["factor"].get<double>(), 2) << " | "
-           << (std::string(mode) == "dlf" ? "default" : "paper") << " | " << fmt(row["prescribed_share"].get<double>(), 4) << " | "
+           << pm.label << " | " << fmt(row["prescribed_share"].get<double>(), 4) << " | "
            << fmt(o["share"].get<double>(), 4) << " | " << (r.contains("share") ? fmt(r["share"].get<double>(), 4) : "—") << " | "
            << r["status"].get<std::string>() << " (" << r["iterations"] << ") | " << o["newton_iterations"]
            << (o["converged"].get<bool>() ? "" : " (not converged)") << " | "
@@ -635,15 +668,37 @@ static void write_markdown(std::ostream& md, const json& doc)
     }
   }
 
+  md << "\n### Table 6 as printed: the sum of squared distances from the start, per factor\n\n"
+     << "`Σ_i |φ(v_i) − φ_0(v_i)|²` over the vertices (no weights, no square root; unit disk), `φ_0` the Tutte start, "
+        "the region and factors of the table above. Difference: (DLF − OT) / OT.\n\n"
+     << "| mesh | factor | OT | DLF | difference | DLF paper | difference | DLF literal | difference |\n"
+     << "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for(const json& c : doc["measure"]) {
+    if(c.contains("error")) continue;
+    for(const json& row : c["rows"]) {
+      if(row.contains("error") || !row["ot"].contains("sum_of_squares")) continue;
+      const double o = row["ot"]["sum_of_squares"].get<double>();
+      md << "| " << c["mesh"].get<std::string>() << " | " << fmt(row["factor"].get<double>(), 2) << " | " << fmt(o, 5) << " |";
+      for(const Paper_tables_mode& pm : paper_tables_modes) {
+        const json& r = row[pm.key];
+        if(!r.contains("sum_of_squares")) { md << " — | — |"; continue; }
+        const double x = r["sum_of_squares"].get<double>();
+        md << " " << fmt(x, 5) << " | " << fmt(100 * (x - o) / o, 2) << "% |";
+      }
+      md << "\n";
+    }
+  }
+
   md << "\n### Table 5: the spherical DLF on CGAL's closed genus-0 meshes\n\n"
      << "| mesh | faces | vertices | mode | status (iterations) | time s | Area_total | D_area | start Area_total | start D_area | folds |\n"
      << "|---|---:|---:|---|---|---:|---:|---:|---:|---:|---:|\n";
   for(const json& c : doc["sphere"]) {
     if(c.contains("error")) { md << "| " << c["mesh"].get<std::string>() << " | " << c["error"].get<std::string>() << " |\n"; continue; }
-    for(const char* mode : { "dlf", "dlf_paper" }) {
+    for(const Paper_tables_mode& pm : paper_tables_modes) {
+      const char* mode = pm.key;
       const json& r = c[mode];
       md << "| " << c["mesh"].get<std::string>() << " | " << c["faces"] << " | " << c["vertices"] << " | "
-         << (std::string(mode) == "dlf" ? "default" : "paper") << " | " << r["status"].get<std::string>() << " ("
+         << pm.label << " | " << r["status"].get<std::string>() << " ("
          << r["iterations"] << ") | " << fmt_time(r["seconds"].get<double>()) << " | ";
       if(r.contains("metrics"))
         md << fmt(r["metrics"]["area_total"].get<double>(), 4) << " | " << fmt(r["metrics"]["d_area"].get<double>(), 4) << " | "
