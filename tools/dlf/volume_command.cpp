@@ -13,7 +13,8 @@
 #include "svg_common.h"
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_volume_3.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume/volume_medit.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_medit.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_tet_mesh.h>
 
 #include <boost/program_options.hpp>
 #include <nlohmann/json.hpp>
@@ -34,7 +35,6 @@ namespace {
 
 namespace po = boost::program_options;
 namespace SMP = CGAL::Surface_mesh_parameterization;
-namespace D = SMP::internal::dlf;
 using json = nlohmann::ordered_json;
 
 const char* volume_help =
@@ -66,7 +66,7 @@ struct Roi
 
 /// Writes the border triangles of the ball seen from +z and −z, coloured by
 /// the log volume ratio of the tet each one bounds.
-void write_svg_ball(std::ostream& out, const std::vector<D::Vec3>& x, const D::Ball_topology& topo,
+void write_svg_ball(std::ostream& out, const std::vector<Vec3>& x, const SMP::Discrete_lie_flow_ball_border& border,
                     const std::vector<double>& ratio, const std::string& caption)
 {
   const double radius = 200, margin = 20, top = 40;
@@ -80,13 +80,13 @@ void write_svg_ball(std::ostream& out, const std::vector<D::Vec3>& x, const D::B
         << "\" text-anchor=\"middle\">" << names[k] << "</text>\n";
   out << "<g stroke-linejoin=\"round\" stroke-width=\"0.3\">\n";
   char buf[64];
-  for(std::size_t f = 0; f < topo.border_faces.size(); ++f) {
-    const auto& t = topo.border_faces[f];
-    const D::Vec3 &a = x[std::size_t(t[0])], &b = x[std::size_t(t[1])], &c = x[std::size_t(t[2])];
+  for(std::size_t f = 0; f < border.faces.size(); ++f) {
+    const auto& t = border.faces[f];
+    const Vec3 &a = x[std::size_t(t[0])], &b = x[std::size_t(t[1])], &c = x[std::size_t(t[2])];
     const double nz = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
     const int view = nz >= 0 ? 0 : 1;
     const double mirror = view == 0 ? 1 : -1;
-    const std::string& colour = colour_of_log_ratio(std::log(ratio[std::size_t(topo.border_tet[f])]));
+    const std::string& colour = colour_of_log_ratio(std::log(ratio[std::size_t(border.face_tet[f])]));
     out << "<polygon points=\"";
     for(int k = 0; k < 3; ++k) {
       std::snprintf(buf, sizeof buf, "%.2f,%.2f%s", cx[view] + mirror * x[std::size_t(t[std::size_t(k)])][0] * radius,
@@ -213,15 +213,15 @@ int volume_command(const std::vector<std::string>& args)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   };
   auto t0 = std::chrono::steady_clock::now();
-  D::Medit_tet_mesh mesh;
+  SMP::Discrete_lie_flow_tet_mesh mesh;
   {
     std::ifstream in(input);
     if(!in) throw Cli_error("cannot open '" + input + "'");
     std::string error;
-    if(!D::read_medit(in, mesh, error)) throw Cli_error(input + ": " + error);
+    if(!SMP::read_medit_tet_mesh(in, mesh, error)) throw Cli_error(input + ": " + error);
   }
   std::vector<int> kept;
-  const std::size_t dropped = D::drop_unused_vertices(mesh, kept);
+  const std::size_t dropped = SMP::drop_unused_tet_mesh_vertices(mesh, kept);
   if(!density_file.empty()) {
     std::ifstream in(density_file);
     if(!in) throw Cli_error("cannot open '" + density_file + "'");
@@ -246,7 +246,7 @@ int volume_command(const std::vector<std::string>& args)
     in_roi.assign(mesh.tets.size(), 0);
     std::size_t count = 0;
     for(std::size_t t = 0; t < mesh.tets.size(); ++t) {
-      D::Vec3 c = {{ 0, 0, 0 }};
+      Vec3 c = {{ 0, 0, 0 }};
       for(int v : mesh.tets[t])
         for(int k = 0; k < 3; ++k) c[std::size_t(k)] += mesh.points[std::size_t(v)][std::size_t(k)] / 4;
       const double d2 = (c[0] - roi.ball[0]) * (c[0] - roi.ball[0]) + (c[1] - roi.ball[1]) * (c[1] - roi.ball[1]) +
@@ -283,20 +283,20 @@ int volume_command(const std::vector<std::string>& args)
     throw Cli_error(input + ": " + R.message, bad_input ? EXIT_BAD_INPUT : EXIT_FLOW_ERROR);
   }
   t0 = std::chrono::steady_clock::now();
-  std::vector<D::Vec3> x(ball.size());
+  std::vector<Vec3> x(ball.size());
   for(std::size_t i = 0; i < ball.size(); ++i) x[i] = {{ ball[i].a, ball[i].b, ball[i].c }};
-  D::Ball_topology topo;
+  SMP::Discrete_lie_flow_ball_border border;
   std::string message;
-  D::check_ball(mesh.points, mesh.tets, topo, message); // checked by the run: the border faces
+  SMP::discrete_lie_flow_ball_border(mesh.points, mesh.tets, border, message); // checked by the run: the border faces
   // The region's share, recomputed from the written points.
   double roi_target = 0, roi_achieved = 0;
   if(has_roi) {
     double T = 0, U = 0;
     for(std::size_t t = 0; t < mesh.tets.size(); ++t) {
-      const D::Tet& k = mesh.tets[t];
-      const double tv = options.tet_density[t] * D::tet_det(mesh.points[std::size_t(k[0])], mesh.points[std::size_t(k[1])],
+      const std::array<int, 4>& k = mesh.tets[t];
+      const double tv = options.tet_density[t] * SMP::discrete_lie_flow_tet_determinant(mesh.points[std::size_t(k[0])], mesh.points[std::size_t(k[1])],
                                                             mesh.points[std::size_t(k[2])], mesh.points[std::size_t(k[3])]);
-      const double uv = D::tet_det(x[std::size_t(k[0])], x[std::size_t(k[1])], x[std::size_t(k[2])], x[std::size_t(k[3])]);
+      const double uv = SMP::discrete_lie_flow_tet_determinant(x[std::size_t(k[0])], x[std::size_t(k[1])], x[std::size_t(k[2])], x[std::size_t(k[3])]);
       T += tv; U += uv;
       if(in_roi[t]) { roi_target += tv; roi_achieved += uv; }
     }
@@ -306,13 +306,13 @@ int volume_command(const std::vector<std::string>& args)
   io.check = since(t0);
   t0 = std::chrono::steady_clock::now();
   if(!output.empty())
-    files.write(output, [&](std::ostream& os) { D::write_medit(os, x, mesh.tets, mesh.tet_refs, topo.border_faces); });
+    files.write(output, [&](std::ostream& os) { SMP::write_medit_tet_mesh(os, x, mesh.tets, mesh.tet_refs, border.faces); });
   io.write = since(t0);
   t0 = std::chrono::steady_clock::now();
   if(!svg_path.empty()) {
     std::ostringstream caption;
     caption << input << ": D_vol " << R.final_d_vol << ", " << R.tets << " tetrahedra";
-    files.write(svg_path, [&](std::ostream& os) { write_svg_ball(os, x, topo, R.volume_ratio, caption.str()); });
+    files.write(svg_path, [&](std::ostream& os) { write_svg_ball(os, x, border, R.volume_ratio, caption.str()); });
   }
   io.pictures = since(t0);
   if(!report_path.empty() || !csv_path.empty()) {
@@ -349,7 +349,7 @@ int volume_command(const std::vector<std::string>& args)
                        { "untangle_iterations", options.untangle_max_iterations },
                        { "coarse_aggregate", options.coarse_aggregate }, { "cg_forcing", options.cg_forcing },
                        { "threads", options.threads },
-                       { "threads_used", D::volume_flow_threads(options.threads, mesh.tets.size()) } };
+                       { "threads_used", R.threads } };
     j["counters"] = { { "rejected_by_exact_check", R.rejected_by_exact_check }, { "cg_iterations", R.cg_iterations } };
     // The start is the border's spherical map, the interior's Tutte map and its untangling.
     j["seconds"] = seconds_json(io, R.seconds_border + R.seconds_interior + R.seconds_untangle, R.seconds_flow,

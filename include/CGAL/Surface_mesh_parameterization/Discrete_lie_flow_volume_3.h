@@ -142,6 +142,9 @@ struct Discrete_lie_flow_volume_report
   std::size_t untangle_iterations = 0; ///< iterations of the start's untangling (every region and stage)
   std::size_t rejected_by_exact_check = 0; ///< trial steps the doubles accepted and the exact predicate refused
   std::size_t cg_iterations = 0; ///< conjugate-gradient steps of the flow, in all
+  /// Threads the flow used (`Discrete_lie_flow_volume_options::threads`,
+  /// 0 resolved to the automatic choice).
+  int threads = 0;
   std::vector<Discrete_lie_flow_volume_share> shares; ///< per density value (up to 32 values)
   double share_error_max = 0; ///< largest |relative_error()| of `shares`
   Discrete_lie_flow_report border; ///< the spherical map of the border
@@ -307,6 +310,7 @@ private:
       return fail(ERROR_WRONG_PARAMETER, "the volumetric flow has a certified and a paper mode, no literal one");
     R.vertices = xyz.size();
     R.tets = tets.size();
+    R.threads = D::volume_flow_threads(O.threads, tets.size());
     D::Ball_topology topo;
     std::string message;
     int code = D::check_ball(xyz, tets, topo, message);

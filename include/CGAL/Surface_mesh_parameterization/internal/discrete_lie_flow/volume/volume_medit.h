@@ -8,6 +8,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_MEDIT_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_MEDIT_H
 
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_tet_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume/volume_mesh.h>
 
 #include <cctype>
@@ -26,13 +27,7 @@ namespace internal {
 namespace dlf {
 
 /// A tetrahedral mesh as a Medit file holds it (0-based indices here).
-struct Medit_tet_mesh
-{
-  std::vector<Vec3> points;
-  std::vector<int> point_refs;
-  std::vector<Tet> tets;
-  std::vector<int> tet_refs; ///< subdomain labels (Mesh_3: the subdomain index)
-};
+typedef Discrete_lie_flow_tet_mesh Medit_tet_mesh;
 
 /// Reads a Medit `.mesh` file (ASCII). Sections other than Vertices and
 /// Tetrahedra are read and ignored when their record size is known
