@@ -56,7 +56,7 @@ struct Volume_flow_settings
   std::size_t cg_max_iterations = 200;
   double cg_tolerance = 1e-3;      ///< relative residual of the inexact Gauss–Newton solve
   double plateau = 1e-4;           ///< stop when (E_prev − E)/(E − 2) stays below this ...
-  std::size_t plateau_window = 8;  ///< ... for this many iterations in a row
+  std::size_t plateau_window = 8;  ///< ... for this many iterations in a row (`Flow_stopping::plateau_in_a_row()`)
   /// Keep every border triangle positive seen from the centre (a
   /// star-shaped border: with positive tets, a certificate of bijectivity).
   bool star_shaped_border = true;
@@ -170,42 +170,19 @@ private:
   std::vector<int> m_order;
 };
 
-/// The volumetric flow's stop test on the plateau: the relative progress
-/// (E_prev − E)/(E − 2) below `plateau` for `plateau_window` iterations in
-/// a row (the surface flows' `Flow_stopping` compares over a window instead).
-class Volume_stopping
-{
-public:
-  explicit Volume_stopping(const Volume_flow_settings& S) : m_plateau(S.plateau), m_window(S.plateau_window) {}
-  void restart(double E) { m_E = E; m_flat = 0; }
-  Discrete_lie_flow_stop_reason after(const Flow_step&, double E)
-  {
-    const double progress = (m_E - E) / (std::max)(E - 2, 1e-300);
-    m_E = E;
-    m_flat = progress < m_plateau ? m_flat + 1 : 0;
-    return m_flat >= m_window ? Discrete_lie_flow_stop_reason::PLATEAU : Discrete_lie_flow_stop_reason::ITERATION_CAP;
-  }
-
-private:
-  double m_plateau;
-  std::size_t m_window;
-  double m_E = 0;
-  std::size_t m_flat = 0;
-};
-
 /// The certified volumetric flow as a policy of `run_flow()` (flow_driver.h;
 /// doc/design.md, "The flow driver"). `x` (every tet positive by the exact
 /// predicate, border points on the unit sphere) is moved in place;
 /// `sum_order` orders the energy's sums (Volume_energy).
-class Volume_certified_flow
+class Volume_certified_flow : public Flow_policy_base
 {
 public:
   Volume_certified_flow(std::vector<Vec3>& x, const std::vector<Tet>& tets, const std::vector<char>& on_border,
                         const std::vector<std::array<int, 3> >& border_faces, const std::vector<double>& target,
                         const Volume_flow_settings& S, std::vector<int> sum_order = std::vector<int>())
-    : m_x(x), m_tets(tets), m_on_border(on_border), m_border_faces(border_faces), m_S(S),
+    : Flow_policy_base(Flow_stopping::plateau_in_a_row(S.plateau_window, S.plateau)), m_x(x), m_tets(tets), m_on_border(on_border), m_border_faces(border_faces), m_S(S),
       m_energy(target, std::move(sum_order)),
-      m_dofs(on_border, false), m_stopping(S), m_grad(tets.size()), m_gv(x.size()), m_x_trial(x.size()), m_M(x.size()),
+      m_dofs(on_border, false), m_grad(tets.size()), m_gv(x.size()), m_x_trial(x.size()), m_M(x.size()),
       m_threads(volume_flow_threads(S.threads, tets.size())), m_coarse(S.coarse_aggregate)
   {
     // Every vertex's corners (4t + j), in increasing t: the per-vertex sums
@@ -220,8 +197,6 @@ public:
       for(int j = 0; j < 4; ++j) m_corners[next[std::size_t(tets[t][std::size_t(j)])]++] = int(4 * t + std::size_t(j));
   }
 
-  Volume_stopping& stopping() { return m_stopping; }
-  bool on_plateau() { return true; }
   double progress() const { return m_E; }
   double d_area() const { return m_E; }  // the record's value: D_vol
   double residual() const { return 0; }  // not part of the volumetric record
@@ -584,7 +559,6 @@ private:
   const Volume_flow_settings& m_S;
   Volume_energy m_energy;
   Volume_dofs m_dofs;
-  Volume_stopping m_stopping;
   std::vector<double> m_u, m_dE, m_w, m_u_trial;
   std::vector<std::array<Vec3, 4> > m_grad;
   std::vector<Vec3> m_gv, m_d, m_x_trial, m_hv;
