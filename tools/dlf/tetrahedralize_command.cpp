@@ -78,6 +78,28 @@ const char* tetrahedralize_help =
   "  dlf tetrahedralize build/data/meshes/bunny00.off -o bunny.mesh --tets 20000\n"
   "  dlf tetrahedralize camel.off -o camel.mesh --size 0.02 --no-optimize\n";
 
+/// The cells of the complex as index arrays, their vertices numbered in
+/// order of appearance.
+void complex_cells(const C3t3& c3t3, std::vector<Vec3>& points, std::vector<std::array<int, 4> >& tets)
+{
+  std::map<Tr::Vertex_handle, int> index;
+  points.clear();
+  tets.clear();
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
+    std::array<int, 4> t;
+    for(int k = 0; k < 4; ++k) {
+      auto it = index.find(c->vertex(k));
+      if(it == index.end()) {
+        it = index.emplace(c->vertex(k), int(points.size())).first;
+        const auto& p = c3t3.triangulation().point(c->vertex(k));
+        points.push_back({{ CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) }});
+      }
+      t[std::size_t(k)] = it->second;
+    }
+    tets.push_back(t);
+  }
+}
+
 } // namespace
 
 int tetrahedralize_command(const std::vector<std::string>& args)
@@ -170,23 +192,7 @@ int tetrahedralize_command(const std::vector<std::string>& args)
     const C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, params::manifold(),
                                               attempt.perturb ? params::perturb() : params::no_perturb(),
                                               attempt.exude ? params::exude() : params::no_exude());
-    // The cells of the complex, their vertices numbered in order of appearance.
-    std::map<Tr::Vertex_handle, int> index;
-    points.clear();
-    tets.clear();
-    for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
-      std::array<int, 4> t;
-      for(int k = 0; k < 4; ++k) {
-        auto it = index.find(c->vertex(k));
-        if(it == index.end()) {
-          it = index.emplace(c->vertex(k), int(points.size())).first;
-          const auto& p = c3t3.triangulation().point(c->vertex(k));
-          points.push_back({{ CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) }});
-        }
-        t[std::size_t(k)] = it->second;
-      }
-      tets.push_back(t);
-    }
+    complex_cells(c3t3, points, tets);
     if(tets.empty()) throw Cli_error(input + ": Mesh_3 produced no tetrahedra (an inside-out or open surface?)");
     border = SMP::Discrete_lie_flow_ball_border();
     if(SMP::discrete_lie_flow_ball_border(points, tets, border, message) == SMP::OK) { note = attempt.name; message.clear(); break; }

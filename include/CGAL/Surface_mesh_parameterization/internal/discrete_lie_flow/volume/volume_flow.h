@@ -109,6 +109,34 @@ inline double level_share_error(const std::vector<int>& level, const std::vector
   return e;
 }
 
+/// The driver's options of a volumetric flow, the same for both policies:
+/// the settings' cap and μ, and a callback that turns the driver's record
+/// into the volumetric one for `history` and the settings' callback.
+/// `tet_of(face)`: the caller's tet of the driver's limiting face (−1 for
+/// none); `cg_of()`: the iteration's conjugate-gradient steps.
+template <class TetOf, class CgOf>
+Discrete_lie_flow_options volume_driver_options(const Volume_flow_settings& S, std::vector<Volume_iteration>* history,
+                                                TetOf tet_of, CgOf cg_of)
+{
+  Discrete_lie_flow_options opt;
+  opt.max_iterations = S.max_iterations;
+  opt.mu = S.mu;
+  if(history || S.callback)
+    opt.callback = [&S, history, tet_of, cg_of](const Discrete_lie_flow_iteration& info) {
+      Volume_iteration I;
+      I.iteration = info.iteration;
+      I.step = info.step;
+      I.critical_step = info.critical_step;
+      I.limiting_tet = tet_of(info.limiting_face);
+      I.d_vol = info.d_area;
+      I.cg_iterations = cg_of();
+      I.seconds = info.seconds;
+      if(history) history->push_back(I);
+      return !(S.callback && !S.callback(I));
+    };
+  return opt;
+}
+
 /// The engine's outcome.
 struct Volume_flow_outcome
 {
@@ -653,23 +681,11 @@ inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vect
   std::vector<int> sum_order(tets.size());
   for(std::size_t i = 0; i < tets.size(); ++i) sum_order[std::size_t(tet_order[i])] = int(i);
   Volume_certified_flow flow(xn, tets_n, on_border_n, faces_n, target_n, Sn, std::move(sum_order));
-  Discrete_lie_flow_options opt;
-  opt.max_iterations = S.max_iterations;
   // The driver records the surface flows' iteration; the volumetric one
-  // adds the conjugate-gradient steps.
-  if(history || S.callback)
-    opt.callback = [&](const Discrete_lie_flow_iteration& info) {
-      Volume_iteration I;
-      I.iteration = info.iteration;
-      I.step = info.step;
-      I.critical_step = info.critical_step;
-      I.limiting_tet = info.limiting_face >= 0 ? tet_order[std::size_t(info.limiting_face)] : -1;
-      I.d_vol = info.d_area;
-      I.cg_iterations = flow.last_cg_iterations();
-      I.seconds = info.seconds;
-      if(history) history->push_back(I);
-      return !(S.callback && !S.callback(I));
-    };
+  // adds the conjugate-gradient steps, its tets in the caller's order.
+  const Discrete_lie_flow_options opt = volume_driver_options(
+    S, history, [&tet_order](int f) { return f >= 0 ? tet_order[std::size_t(f)] : -1; },
+    [&flow] { return flow.last_cg_iterations(); });
   const Flow_outcome o = run_flow(flow, opt);
   Volume_flow_outcome out;
   out.stop_reason = o.stop_reason;
