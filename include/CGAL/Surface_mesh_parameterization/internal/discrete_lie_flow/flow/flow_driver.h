@@ -102,11 +102,10 @@ public:
     /// over `tail_window` iterations.
     double tail_rate = 0;
     std::size_t tail_window = 0;
-    /// Plateau in a row (0: off), the volumetric flows' variant: one
+    /// Plateau in a row (0: off), the certified volumetric flow's rule: one
     /// iteration's relative gain (x_prev − x)/(x − 2) below
     /// `row_tolerance` for `row_window` iterations in a row, counted afresh
-    /// after any larger gain (an energy whose optimum is 2 gains little per
-    /// step long before a window's total turns small).
+    /// after any larger gain.
     std::size_t row_window = 0;
     double row_tolerance = 0;
     /// Stall: the same face limits `stall_window` consecutive steps shorter
