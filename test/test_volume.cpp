@@ -893,10 +893,7 @@ TEST(Volume, PlateauNeedsTheWholeWindowOfSmallRelativeProgress)
 {
   // (E_prev − E)/(E − 2) below the plateau value for `plateau_window`
   // iterations in a row, counted afresh after any larger gain.
-  D::Volume_flow_settings S;
-  S.plateau = 1e-4;
-  S.plateau_window = 3;
-  D::Volume_stopping stop(S);
+  D::Flow_stopping stop(D::Flow_stopping::plateau_in_a_row(3, 1e-4));
   typedef SMP::Discrete_lie_flow_stop_reason R;
   D::Flow_step step;
   stop.restart(2.1);

@@ -254,16 +254,19 @@ void check_svg_options(const po::variables_map& vm, bool has_svg, bool has_densi
   if(svg.max_faces < 1) throw Cli_error("--svg-max-faces must be >= 1");
 }
 
-bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s)
+namespace {
+
+/// The numbers of `dlf disk` parsed apart from its settings: their checks
+/// come first, their values go into the options last.
+struct Disk_numbers
 {
-  const SMP::Discrete_lie_flow_options defaults;
-  double tolerance = defaults.tolerance, mu = defaults.mu;
-  long long max_iterations = (long long)(defaults.max_iterations);
+  double tolerance = 0, mu = 0;
+  long long max_iterations = 0;
+};
 
-  std::ostringstream tolerance_help;
-  tolerance_help << "stop when d_area - 2 <= X (" << density_tolerance << " when a density or region is given)";
-
-  po::options_description o("Options");
+/// The options of `dlf disk`, bound to `s` and `n`.
+void add_disk_options(po::options_description& o, Disk_settings& s, Disk_numbers& n, const std::string& tolerance_help)
+{
   o.add_options()
     ("help,h", "show this help")
     ("output,o", po::value<std::string>(&s.output)->value_name("OUT.obj"),
@@ -309,11 +312,11 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
      "textured in MeshLab or Blender")
     ("texture-size", po::value<int>(&s.texture_size)->value_name("N")->default_value(s.texture_size),
      "pixels a side of the checkerboard PNG (16 x 16 squares)")
-    ("tolerance", po::value<double>(&tolerance)->value_name("X")->default_value(tolerance),
-     tolerance_help.str().c_str())
-    ("max-iterations", po::value<long long>(&max_iterations)->value_name("N")->default_value(max_iterations),
+    ("tolerance", po::value<double>(&n.tolerance)->value_name("X")->default_value(n.tolerance),
+     tolerance_help.c_str())
+    ("max-iterations", po::value<long long>(&n.max_iterations)->value_name("N")->default_value(n.max_iterations),
      "iteration cap")
-    ("mu", po::value<double>(&mu)->value_name("X"),
+    ("mu", po::value<double>(&n.mu)->value_name("X"),
      "fraction in (0, 1) of the smallest critical step that a step may take (default: the mode's own)")
     ("fixed-step", po::value<double>(&s.options.fixed_step)->value_name("X"),
      "a fixed step X > 0 instead of the adaptive one (the paper's Table 2); literal mode: a step that "
@@ -348,7 +351,78 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
     ("quiet,q", "print nothing on success (no progress, no summary)")
     ("verbose,v", "progress with the step's details (critical step, limiting face, backtracks), never "
      "overwritten, and the time spent writing each output");
+}
 
+/// The checks of the parsed command line, in the order of their messages;
+/// the region's tolerance into `n` with a density.
+void check_disk_arguments(const po::variables_map& vm, const std::vector<po::option>& ordered, Disk_settings& s,
+                          Disk_numbers& n)
+{
+  require_one_of("mode", s.mode, { "certified", "paper", "literal" });
+  require_one_of("init", s.init, { "tutte", "mvc", "dcp", "lscm", "arap" });
+  if(!s.init_uv_file.empty()) {
+    if(!vm["init"].defaulted()) throw Cli_error("--init-uv and --init exclude each other");
+    if(!s.seam.empty()) throw Cli_error("--init-uv applies to meshes without --seam");
+    if(!s.border.empty() && s.border != "free")
+      throw Cli_error("--init-uv keeps the map's own border: --border free only");
+    s.init = "uv";
+    s.border = "free";
+  }
+  if(s.border.empty()) s.border = has_fixed_border(s.init) ? "circle" : "free";
+  require_one_of("border", s.border, { "circle", "square", "free" });
+  if(!has_fixed_border(s.init) && s.border != "free")
+    throw Cli_error("--border " + s.border + " needs a fixed-border initial map (--init tutte, mvc or dcp); " +
+                    s.init + " gives a free border");
+  if(!(n.tolerance >= 0) || !std::isfinite(n.tolerance)) throw Cli_error("--tolerance must be a number >= 0");
+  if(vm.count("mu") && !(n.mu > 0 && n.mu < 1)) throw Cli_error("--mu must be in (0, 1)");
+  if(n.max_iterations < 0) throw Cli_error("--max-iterations must be >= 0");
+  if(s.outer_loop < 0) throw Cli_error("--outer-loop must be >= 0");
+  // Below 16 pixels a side the 16 squares vanish; above 16384 the PNG is huge.
+  if(s.texture_size < 16 || s.texture_size > 16384) throw Cli_error("--texture-size must be in [16, 16384]");
+  if(vm.count("texture-size") && !vm["texture-size"].defaulted() && s.texture_obj.empty())
+    throw Cli_error("--texture-size applies to --texture only");
+  s.regions = regions_of(ordered);
+  if(!s.density_file.empty() && !s.regions.empty()) throw Cli_error("--density and --roi/--roi-ball exclude each other");
+  if(vm.count("band") && s.regions.empty()) throw Cli_error("--band applies to --roi and --roi-ball only");
+  if(!(s.band >= 0) || !std::isfinite(s.band)) throw Cli_error("--band must be a number >= 0");
+  if(!(s.options.certified.share_tolerance >= 0) || !std::isfinite(s.options.certified.share_tolerance))
+    throw Cli_error("--share-tolerance must be a number >= 0");
+  if(s.has_density() && vm["tolerance"].defaulted()) n.tolerance = density_tolerance;
+  check_svg_options(vm, !s.svg.empty(), s.has_density(), s.svg_options);
+  check_mode_options(vm, s.mode, s.options);
+}
+
+/// The flow's options from the checked settings.
+void set_disk_flow_options(const po::variables_map& vm, Disk_settings& s, const Disk_numbers& n)
+{
+  SMP::Discrete_lie_flow_options& opt = s.options;
+  opt.mode = mode_of(s.mode);
+  opt.disk.border = s.border == "circle" ? SMP::Discrete_lie_flow_border::CIRCLE
+             : s.border == "square" ? SMP::Discrete_lie_flow_border::SQUARE : SMP::Discrete_lie_flow_border::FREE;
+  opt.tolerance = n.tolerance;
+  opt.mu = n.mu;
+  opt.max_iterations = std::size_t(n.max_iterations);
+  opt.paper.lump_targets_on_flowing_faces = vm.count("literal-targets") == 0;
+  opt.paper.delaunay_flips = vm.count("no-flips") == 0;
+  s.history_in_report = vm.count("history") != 0;
+  opt.record_history = s.history_in_report || !s.convergence_svg.empty();
+}
+
+} // namespace
+
+bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s)
+{
+  const SMP::Discrete_lie_flow_options defaults;
+  Disk_numbers n;
+  n.tolerance = defaults.tolerance;
+  n.mu = defaults.mu;
+  n.max_iterations = (long long)(defaults.max_iterations);
+
+  std::ostringstream tolerance_help;
+  tolerance_help << "stop when d_area - 2 <= X (" << density_tolerance << " when a density or region is given)";
+
+  po::options_description o("Options");
+  add_disk_options(o, s, n, tolerance_help.str());
   std::vector<po::option> ordered;
   const po::variables_map vm = parse("disk", glue_roi_ball(args), o, "input", &ordered);
   if(vm.count("help")) {
@@ -366,50 +440,8 @@ bool parse_disk_arguments(const std::vector<std::string>& args, Disk_settings& s
   s.input = inputs[0];
   set_verbosity(vm, s.verbosity);
 
-  require_one_of("mode", s.mode, { "certified", "paper", "literal" });
-  require_one_of("init", s.init, { "tutte", "mvc", "dcp", "lscm", "arap" });
-  if(!s.init_uv_file.empty()) {
-    if(!vm["init"].defaulted()) throw Cli_error("--init-uv and --init exclude each other");
-    if(!s.seam.empty()) throw Cli_error("--init-uv applies to meshes without --seam");
-    if(!s.border.empty() && s.border != "free")
-      throw Cli_error("--init-uv keeps the map's own border: --border free only");
-    s.init = "uv";
-    s.border = "free";
-  }
-  if(s.border.empty()) s.border = has_fixed_border(s.init) ? "circle" : "free";
-  require_one_of("border", s.border, { "circle", "square", "free" });
-  if(!has_fixed_border(s.init) && s.border != "free")
-    throw Cli_error("--border " + s.border + " needs a fixed-border initial map (--init tutte, mvc or dcp); " +
-                    s.init + " gives a free border");
-  if(!(tolerance >= 0) || !std::isfinite(tolerance)) throw Cli_error("--tolerance must be a number >= 0");
-  if(vm.count("mu") && !(mu > 0 && mu < 1)) throw Cli_error("--mu must be in (0, 1)");
-  if(max_iterations < 0) throw Cli_error("--max-iterations must be >= 0");
-  if(s.outer_loop < 0) throw Cli_error("--outer-loop must be >= 0");
-  // Below 16 pixels a side the 16 squares vanish; above 16384 the PNG is huge.
-  if(s.texture_size < 16 || s.texture_size > 16384) throw Cli_error("--texture-size must be in [16, 16384]");
-  if(vm.count("texture-size") && !vm["texture-size"].defaulted() && s.texture_obj.empty())
-    throw Cli_error("--texture-size applies to --texture only");
-  s.regions = regions_of(ordered);
-  if(!s.density_file.empty() && !s.regions.empty()) throw Cli_error("--density and --roi/--roi-ball exclude each other");
-  if(vm.count("band") && s.regions.empty()) throw Cli_error("--band applies to --roi and --roi-ball only");
-  if(!(s.band >= 0) || !std::isfinite(s.band)) throw Cli_error("--band must be a number >= 0");
-  if(!(s.options.certified.share_tolerance >= 0) || !std::isfinite(s.options.certified.share_tolerance))
-    throw Cli_error("--share-tolerance must be a number >= 0");
-  if(s.has_density() && vm["tolerance"].defaulted()) tolerance = density_tolerance;
-  check_svg_options(vm, !s.svg.empty(), s.has_density(), s.svg_options);
-  check_mode_options(vm, s.mode, s.options);
-
-  SMP::Discrete_lie_flow_options& opt = s.options;
-  opt.mode = mode_of(s.mode);
-  opt.disk.border = s.border == "circle" ? SMP::Discrete_lie_flow_border::CIRCLE
-             : s.border == "square" ? SMP::Discrete_lie_flow_border::SQUARE : SMP::Discrete_lie_flow_border::FREE;
-  opt.tolerance = tolerance;
-  opt.mu = mu;
-  opt.max_iterations = std::size_t(max_iterations);
-  opt.paper.lump_targets_on_flowing_faces = vm.count("literal-targets") == 0;
-  opt.paper.delaunay_flips = vm.count("no-flips") == 0;
-  s.history_in_report = vm.count("history") != 0;
-  opt.record_history = s.history_in_report || !s.convergence_svg.empty();
+  check_disk_arguments(vm, ordered, s, n);
+  set_disk_flow_options(vm, s, n);
   return true;
 }
 

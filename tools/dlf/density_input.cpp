@@ -7,7 +7,7 @@
 #include "surface_mesh.h"
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_density.h>
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/distortion.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_distortion.h>
 
 #include <algorithm>
 #include <cmath>
@@ -179,7 +179,7 @@ Density_setup make_density(const Indexed_mesh& mesh, const Disk_settings& s)
     for(int f : region.faces) member[std::size_t(f)] = true;
     for(std::size_t f = 0; f < mesh.faces.size(); ++f) {
       const Triangle& t = mesh.faces[f];
-      const double area = SMP::internal::dlf::triangle_area_3(mesh.xyz[t[0]], mesh.xyz[t[1]], mesh.xyz[t[2]]);
+      const double area = SMP::discrete_lie_flow_triangle_area(mesh.xyz[t[0]], mesh.xyz[t[1]], mesh.xyz[t[2]]);
       all += d.face_density[f] * area;
       area_all += area;
       if(member[f]) {

@@ -7,8 +7,6 @@
 #ifndef DLF_CLI_MESH_INPUT_H
 #define DLF_CLI_MESH_INPUT_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/critical_step.h>
-
 #include <array>
 #include <cstddef>
 #include <string>
@@ -16,8 +14,8 @@
 
 namespace dlf_cli {
 
-typedef CGAL::Surface_mesh_parameterization::internal::dlf::Vec2 Vec2;
-typedef CGAL::Surface_mesh_parameterization::internal::dlf::Vec3 Vec3;
+typedef std::array<double, 2> Vec2; ///< a point of the plane, as the library's index-form functions take it
+typedef std::array<double, 3> Vec3; ///< a point in space, likewise
 typedef std::array<int, 3> Triangle;
 
 /// A triangle mesh as index arrays, in the order of the input file.

@@ -13,7 +13,7 @@
 #include "obj_io.h"
 #include "output_files.h"
 
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/atlas/atlas_score.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_distortion.h>
 
 #include <iomanip>
 #include <cmath>
@@ -33,9 +33,9 @@ int score_command(const std::vector<std::string>& args)
   // Per-corner uv (a map with seams) is measured on the mesh cut open.
   const Obj_map map = read_map_obj(s.parameterization, mesh);
   const Metrics m = compute_metrics(map.surface, map.uv);
-  namespace D = CGAL::Surface_mesh_parameterization::internal::dlf;
-  D::Atlas_score atlas;
-  if(map.per_corner) atlas = D::score_atlas(mesh.xyz, mesh.faces, map.uv, map.surface.faces);
+  namespace SMP = CGAL::Surface_mesh_parameterization;
+  SMP::Discrete_lie_flow_atlas_score atlas;
+  if(map.per_corner) atlas = SMP::discrete_lie_flow_atlas_score(mesh.xyz, mesh.faces, map.uv, map.surface.faces);
 
   if(!s.report.empty() || !s.csv.empty()) {
     nlohmann::ordered_json report = { { "status", "ok" }, { "mesh", s.mesh }, { "parameterization", s.parameterization },

@@ -22,6 +22,7 @@
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_distortion.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_sphere_3.h>
 
 #include <boost/program_options.hpp>
@@ -200,12 +201,11 @@ namespace {
 // The share of the sphere's (flat) area each region got.
 void measure_regions_on_sphere(const Indexed_mesh& mesh, const std::vector<Vec3>& p, Density_setup& setup)
 {
-  namespace D = SMP::internal::dlf;
   std::vector<double> area(mesh.faces.size());
   double total = 0;
   for(std::size_t f = 0; f < mesh.faces.size(); ++f) {
     const Triangle& t = mesh.faces[f];
-    area[f] = D::signed_area_sphere(p[std::size_t(t[0])], p[std::size_t(t[1])], p[std::size_t(t[2])]);
+    area[f] = SMP::discrete_lie_flow_sphere_signed_area(p[std::size_t(t[0])], p[std::size_t(t[1])], p[std::size_t(t[2])]);
     total += area[f];
   }
   for(Density_region& r : setup.regions) {

@@ -3,7 +3,7 @@
 
 #include "svg_common.h"
 
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/distortion.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_distortion.h>
 
 #include <algorithm>
 #include <array>
@@ -15,7 +15,7 @@ namespace dlf_cli {
 
 namespace {
 
-namespace D = CGAL::Surface_mesh_parameterization::internal::dlf;
+namespace SMP = CGAL::Surface_mesh_parameterization;
 
 typedef std::array<double, 3> Rgb;
 const Rgb blue = {{ 33, 102, 172 }}, white = {{ 247, 247, 247 }}, red = {{ 178, 24, 43 }};
@@ -36,8 +36,10 @@ double signed_area(const Vec2& a, const Vec2& b, const Vec2& c)
 }
 double signed_area(const Vec3& a, const Vec3& b, const Vec3& c)
 {
-  const double area = D::triangle_area_3(a, b, c);
-  return D::dot(a, D::cross(b, c)) < 0 ? -area : area;
+  const double area = SMP::discrete_lie_flow_triangle_area(a, b, c);
+  // det[a, b, c] = a · (b × c)
+  const double det = a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+  return det < 0 ? -area : area;
 }
 
 template <class Point>
@@ -50,7 +52,7 @@ std::vector<double> log_ratios(const Indexed_mesh& mesh, const std::vector<Point
   long balance = 0;
   for(std::size_t f = 0; f < F; ++f) {
     const Triangle& t = mesh.faces[f];
-    a3[f] = D::triangle_area_3(mesh.xyz[t[0]], mesh.xyz[t[1]], mesh.xyz[t[2]]) *
+    a3[f] = SMP::discrete_lie_flow_triangle_area(mesh.xyz[t[0]], mesh.xyz[t[1]], mesh.xyz[t[2]]) *
             (face_density.empty() ? 1. : face_density[f]);
     a2[f] = signed_area(domain[t[0]], domain[t[1]], domain[t[2]]);
     balance += a2[f] > 0 ? 1 : a2[f] < 0 ? -1 : 0;

@@ -6,7 +6,7 @@
 #include "svg_raster.h"
 #include "text_buffer.h"
 
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/certification.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_distortion.h>
 
 #include <algorithm>
 #include <array>
@@ -19,7 +19,7 @@ namespace dlf_cli {
 
 namespace {
 
-namespace D = CGAL::Surface_mesh_parameterization::internal::dlf;
+namespace SMP = CGAL::Surface_mesh_parameterization;
 
 const double layout_size = 760, margin = 20, legend_width = 150;
 
@@ -39,10 +39,10 @@ void write_svg_layout(std::ostream& out, const Indexed_mesh& mesh, const std::ve
   long balance = 0;
   for(std::size_t f = 0; f < F; ++f) {
     const Triangle& t = mesh.faces[f];
-    a3[f] = D::triangle_area_3(mesh.xyz[t[0]], mesh.xyz[t[1]], mesh.xyz[t[2]]) *
+    a3[f] = SMP::discrete_lie_flow_triangle_area(mesh.xyz[t[0]], mesh.xyz[t[1]], mesh.xyz[t[2]]) *
             (face_density.empty() ? 1. : face_density[f]);
-    a2[f] = std::abs(D::signed_area_2(uv[t[0]], uv[t[1]], uv[t[2]]));
-    sign[f] = int(D::exact_orientation_2(uv[t[0]], uv[t[1]], uv[t[2]]));
+    a2[f] = std::abs(SMP::discrete_lie_flow_signed_area_2(uv[t[0]], uv[t[1]], uv[t[2]]));
+    sign[f] = int(SMP::discrete_lie_flow_orientation_2(uv[t[0]], uv[t[1]], uv[t[2]]));
     sum3 += a3[f];
     sum2 += a2[f];
     balance += sign[f];

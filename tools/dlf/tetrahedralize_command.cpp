@@ -29,7 +29,8 @@ int tetrahedralize_command(const std::vector<std::string>&)
 #include "mesh_input.h"
 #include "output_files.h"
 
-#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/volume/volume_medit.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_medit.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_tet_mesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
@@ -43,6 +44,7 @@ int tetrahedralize_command(const std::vector<std::string>&)
 
 #include <boost/program_options.hpp>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -53,7 +55,7 @@ namespace dlf_cli {
 namespace {
 
 namespace po = boost::program_options;
-namespace D = CGAL::Surface_mesh_parameterization::internal::dlf;
+namespace SMP = CGAL::Surface_mesh_parameterization;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Polyhedron;
 typedef CGAL::Polyhedral_mesh_domain_3<Polyhedron, K> Mesh_domain;
@@ -75,6 +77,28 @@ const char* tetrahedralize_help =
   "Examples:\n"
   "  dlf tetrahedralize build/data/meshes/bunny00.off -o bunny.mesh --tets 20000\n"
   "  dlf tetrahedralize camel.off -o camel.mesh --size 0.02 --no-optimize\n";
+
+/// The cells of the complex as index arrays, their vertices numbered in
+/// order of appearance.
+void complex_cells(const C3t3& c3t3, std::vector<Vec3>& points, std::vector<std::array<int, 4> >& tets)
+{
+  std::map<Tr::Vertex_handle, int> index;
+  points.clear();
+  tets.clear();
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
+    std::array<int, 4> t;
+    for(int k = 0; k < 4; ++k) {
+      auto it = index.find(c->vertex(k));
+      if(it == index.end()) {
+        it = index.emplace(c->vertex(k), int(points.size())).first;
+        const auto& p = c3t3.triangulation().point(c->vertex(k));
+        points.push_back({{ CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) }});
+      }
+      t[std::size_t(k)] = it->second;
+    }
+    tets.push_back(t);
+  }
+}
 
 } // namespace
 
@@ -159,45 +183,29 @@ int tetrahedralize_command(const std::vector<std::string>& args)
     ? std::vector<Attempt>{ { false, false, "" } }
     : std::vector<Attempt>{ { true, true, "" }, { true, false, " (without exudation: the exuded mesh was not a ball)" },
                             { false, false, " (without optimisation: the optimised meshes were not balls)" } };
-  std::vector<D::Vec3> points;
-  std::vector<D::Tet> tets;
-  D::Ball_topology topo;
+  std::vector<Vec3> points;
+  std::vector<std::array<int, 4> > tets;
+  SMP::Discrete_lie_flow_ball_border border;
   std::string message, note;
   for(const Attempt& attempt : attempts) {
     CGAL::get_default_random() = CGAL::Random(0);
     const C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, params::manifold(),
                                               attempt.perturb ? params::perturb() : params::no_perturb(),
                                               attempt.exude ? params::exude() : params::no_exude());
-    // The cells of the complex, their vertices numbered in order of appearance.
-    std::map<Tr::Vertex_handle, int> index;
-    points.clear();
-    tets.clear();
-    for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
-      D::Tet t;
-      for(int k = 0; k < 4; ++k) {
-        auto it = index.find(c->vertex(k));
-        if(it == index.end()) {
-          it = index.emplace(c->vertex(k), int(points.size())).first;
-          const auto& p = c3t3.triangulation().point(c->vertex(k));
-          points.push_back({{ CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) }});
-        }
-        t[std::size_t(k)] = it->second;
-      }
-      tets.push_back(t);
-    }
+    complex_cells(c3t3, points, tets);
     if(tets.empty()) throw Cli_error(input + ": Mesh_3 produced no tetrahedra (an inside-out or open surface?)");
-    topo = D::Ball_topology();
-    if(D::check_ball(points, tets, topo, message) == 0) { note = attempt.name; message.clear(); break; }
+    border = SMP::Discrete_lie_flow_ball_border();
+    if(SMP::discrete_lie_flow_ball_border(points, tets, border, message) == SMP::OK) { note = attempt.name; message.clear(); break; }
   }
   if(!message.empty())
     throw Cli_error(input + ": the tetrahedral mesh is not a ball (" + message + "); try a smaller --size", EXIT_FLOW_ERROR);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   files.write(output, [&](std::ostream& os) {
-    D::write_medit(os, points, tets, std::vector<int>(tets.size(), 1), topo.border_faces);
+    SMP::write_medit_tet_mesh(os, points, tets, std::vector<int>(tets.size(), 1), border.faces);
   });
   files.commit();
   if(!quiet)
-    std::cout << "tetrahedralize: " << points.size() << " vertices (" << topo.border_vertices << " on the border), "
+    std::cout << "tetrahedralize: " << points.size() << " vertices (" << border.vertices << " on the border), "
               << tets.size() << " tetrahedra, " << seconds << " s -> " << output << note << std::endl;
   return EXIT_OK;
 }

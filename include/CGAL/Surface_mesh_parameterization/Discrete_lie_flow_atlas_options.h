@@ -147,6 +147,28 @@ struct Discrete_lie_flow_atlas_report
   }
 };
 
+/// \ingroup PkgDiscreteLieFlowOptions
+/// The score of an atlas given as per-corner uv, whoever made it
+/// (`discrete_lie_flow_atlas_score()`); orientations and overlaps by CGAL's
+/// exact predicates on the stored doubles.
+struct Discrete_lie_flow_atlas_score
+{
+  std::size_t faces = 0;                    ///< triangles scored
+  std::size_t charts = 0;                   ///< faces joined across edges whose two sides share their uv
+  double seam_length = 0;                   ///< 3D length of the edges cut open (the input's border not counted)
+  double surface_area = 0;                  ///< 3D area of the triangles
+  double uv_area = 0;                       ///< Σ |uv area| of the faces
+  double packing_efficiency = 0;            ///< uv_area over the area of the uv's bounding rectangle
+  double bounding_width = 0;                ///< width of the uv's bounding rectangle
+  double bounding_height = 0;               ///< height of the uv's bounding rectangle
+  std::size_t inverted_faces = 0;           ///< against the orientation of most of their chart's area, exact
+  std::size_t mirrored_charts = 0;          ///< charts oriented clockwise as a whole (not a fold)
+  std::size_t degenerate_faces = 0;         ///< zero uv area, exact
+  std::size_t overlapping_face_pairs = 0;   ///< pairs of uv triangles whose interiors meet, exact
+  std::size_t overlapping_pairs_in_a_chart = 0; ///< of which both in one chart (a fold)
+  Discrete_lie_flow_distortion metrics;     ///< of the whole atlas (d_area: every triangle against its share)
+};
+
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
 

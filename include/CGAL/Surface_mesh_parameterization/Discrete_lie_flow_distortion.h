@@ -7,7 +7,12 @@
 #include <CGAL/license/Surface_mesh_parameterization.h>
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_atlas_options.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/atlas/atlas_score.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/certification.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/distortion.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/geometry.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/sphere/sphere_problem.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -61,6 +66,59 @@ discrete_lie_flow_map_difference(const std::vector<std::array<double, 3> >& xyz,
                                  const std::vector<double>& face_density = std::vector<double>())
 {
   return internal::dlf::map_difference(xyz, a, b, faces, face_density);
+}
+
+/// \ingroup PkgDiscreteLieFlowParameterizers
+/// The score of an atlas given as per-corner uv (an OBJ's `f v/vt`), whoever
+/// made it: `uv` the uv points, `uv_faces` per face its corners' uv points,
+/// of the triangles `faces` over `xyz`. Charts are the faces joined across
+/// edges whose two sides share their uv; orientations and overlapping uv
+/// triangles are decided by CGAL's exact predicates.
+inline Discrete_lie_flow_atlas_score
+discrete_lie_flow_atlas_score(const std::vector<std::array<double, 3> >& xyz,
+                              const std::vector<std::array<int, 3> >& faces,
+                              const std::vector<std::array<double, 2> >& uv,
+                              const std::vector<std::array<int, 3> >& uv_faces)
+{
+  return internal::dlf::score_atlas(xyz, faces, uv, uv_faces);
+}
+
+/// \ingroup PkgDiscreteLieFlowParameterizers
+/// The area of the triangle (a, b, c) in space, in doubles: the measure the
+/// flows give an input triangle.
+inline double discrete_lie_flow_triangle_area(const std::array<double, 3>& a, const std::array<double, 3>& b,
+                                              const std::array<double, 3>& c)
+{
+  return internal::dlf::triangle_area_3(a, b, c);
+}
+
+/// \ingroup PkgDiscreteLieFlowParameterizers
+/// The signed area of the planar triangle (a, b, c) in doubles, positive
+/// counter-clockwise.
+inline double discrete_lie_flow_signed_area_2(const std::array<double, 2>& a, const std::array<double, 2>& b,
+                                              const std::array<double, 2>& c)
+{
+  return internal::dlf::signed_area_2(a, b, c);
+}
+
+/// \ingroup PkgDiscreteLieFlowParameterizers
+/// The orientation of the planar triangle (a, b, c) by CGAL's exact
+/// predicate on the doubles: what the certified flows call fold-free.
+inline CGAL::Orientation discrete_lie_flow_orientation_2(const std::array<double, 2>& a,
+                                                         const std::array<double, 2>& b,
+                                                         const std::array<double, 2>& c)
+{
+  return internal::dlf::exact_orientation_2(a, b, c);
+}
+
+/// \ingroup PkgDiscreteLieFlowParameterizers
+/// The signed area of the flat triangle between the sphere points a, b, c:
+/// its area, with the sign of det[a, b, c] (positive when the triangle is
+/// counter-clockwise seen from outside the unit sphere).
+inline double discrete_lie_flow_sphere_signed_area(const std::array<double, 3>& a, const std::array<double, 3>& b,
+                                                   const std::array<double, 3>& c)
+{
+  return internal::dlf::signed_area_sphere(a, b, c);
 }
 
 namespace internal {

@@ -12,6 +12,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_ATLAS_SCORE_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_ATLAS_SCORE_H
 
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_atlas_options.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/certification.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/distortion.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/geometry.h>
@@ -30,23 +31,7 @@ namespace internal {
 namespace dlf {
 
 /// What `score_atlas()` measured.
-struct Atlas_score
-{
-  std::size_t faces = 0;                    ///< triangles scored
-  std::size_t charts = 0;                   ///< faces joined across edges whose two sides share their uv
-  double seam_length = 0;                   ///< 3D length of the edges cut open (the input's border not counted)
-  double surface_area = 0;                  ///< 3D area of the triangles
-  double uv_area = 0;                       ///< Σ |uv area| of the faces
-  double packing_efficiency = 0;            ///< uv_area over the area of the uv's bounding rectangle
-  double bounding_width = 0;                ///< width of the uv's bounding rectangle
-  double bounding_height = 0;               ///< height of the uv's bounding rectangle
-  std::size_t inverted_faces = 0;           ///< against the orientation of most of their chart's area, exact
-  std::size_t mirrored_charts = 0;          ///< charts oriented clockwise as a whole (not a fold)
-  std::size_t degenerate_faces = 0;         ///< zero uv area, exact
-  std::size_t overlapping_face_pairs = 0;   ///< pairs of uv triangles whose interiors meet, exact
-  std::size_t overlapping_pairs_in_a_chart = 0; ///< of which both in one chart (a fold)
-  Distortion_metrics metrics;               ///< of the whole atlas (d_area: every triangle against its share)
-};
+typedef Discrete_lie_flow_atlas_score Atlas_score;
 
 /// Do the interiors of the non-degenerate uv triangles `a` and `b` meet?
 /// Two convex polygons have disjoint interiors exactly when a line through

@@ -102,6 +102,12 @@ public:
     /// over `tail_window` iterations.
     double tail_rate = 0;
     std::size_t tail_window = 0;
+    /// Plateau in a row (0: off), the certified volumetric flow's rule: one
+    /// iteration's relative gain (x_prev − x)/(x − 2) below
+    /// `row_tolerance` for `row_window` iterations in a row, counted afresh
+    /// after any larger gain.
+    std::size_t row_window = 0;
+    double row_tolerance = 0;
     /// Stall: the same face limits `stall_window` consecutive steps shorter
     /// than `stall_step`, or as many steps need 20 halvings or more.
     Stall stall = NO_STALL_TEST;
@@ -123,8 +129,19 @@ public:
 
   explicit Flow_stopping(const Rules& rules) : m_rules(rules) {}
 
+  /// The rules of the plateau in a row alone, over `window` iterations of
+  /// relative gain below `tolerance` (no window plateau, no stall test).
+  static Rules plateau_in_a_row(std::size_t window, double tolerance)
+  {
+    Rules r;
+    r.plateau = false;
+    r.row_window = window;
+    r.row_tolerance = tolerance;
+    return r;
+  }
+
   /// Restarts the progress sequence from `x0` (the start, or a new phase of the flow).
-  void restart(double x0) { m_history.assign(1, x0); }
+  void restart(double x0) { m_history.assign(1, x0); m_row = 0; }
 
   /// Records the iteration's progress value; the reason to stop, or
   /// `ITERATION_CAP` to go on.
@@ -132,6 +149,7 @@ public:
   {
     typedef Discrete_lie_flow_stop_reason R;
     m_history.push_back(x);
+    const bool flat_row = in_a_row(x);
     if(stalled(step)) return R::STALLED;
     if(m_rules.plateau && m_history.size() > m_rules.plateau_window &&
        back(m_rules.plateau_window) - x < m_rules.plateau_tolerance * (x - 1))
@@ -139,11 +157,21 @@ public:
     if(m_rules.tail_rate > 0 && m_history.size() > m_rules.tail_window &&
        back(m_rules.tail_window) - x < m_rules.tail_rate * (x - 2))
       return R::PLATEAU;
+    if(flat_row) return R::PLATEAU;
     return R::ITERATION_CAP;
   }
 
 private:
   double back(std::size_t k) const { return m_history[m_history.size() - 1 - k]; }
+
+  // The plateau in a row: counts the iterations of small relative gain.
+  bool in_a_row(double x)
+  {
+    if(m_rules.row_window == 0 || m_history.size() < 2) return false;
+    const double gain = (back(1) - x) / (std::max)(x - 2, 1e-300);
+    m_row = gain < m_rules.row_tolerance ? m_row + 1 : 0;
+    return m_row >= m_rules.row_window;
+  }
 
   bool stalled(const Flow_step& step)
   {
@@ -166,6 +194,7 @@ private:
   std::vector<double> m_history;
   int m_last_limiting = -1;
   std::size_t m_count = 0;
+  std::size_t m_row = 0;
 };
 
 /// The fraction μ of the smallest critical root that a step may take: the

@@ -56,7 +56,7 @@ struct Volume_flow_settings
   std::size_t cg_max_iterations = 200;
   double cg_tolerance = 1e-3;      ///< relative residual of the inexact Gauss–Newton solve
   double plateau = 1e-4;           ///< stop when (E_prev − E)/(E − 2) stays below this ...
-  std::size_t plateau_window = 8;  ///< ... for this many iterations in a row
+  std::size_t plateau_window = 8;  ///< ... for this many iterations in a row (`Flow_stopping::plateau_in_a_row()`)
   /// Keep every border triangle positive seen from the centre (a
   /// star-shaped border: with positive tets, a certificate of bijectivity).
   bool star_shaped_border = true;
@@ -107,6 +107,34 @@ inline double level_share_error(const std::vector<int>& level, const std::vector
   }
   if(achieved) achieved->swap(a);
   return e;
+}
+
+/// The driver's options of a volumetric flow, the same for both policies:
+/// the settings' cap and μ, and a callback that turns the driver's record
+/// into the volumetric one for `history` and the settings' callback.
+/// `tet_of(face)`: the caller's tet of the driver's limiting face (−1 for
+/// none); `cg_of()`: the iteration's conjugate-gradient steps.
+template <class TetOf, class CgOf>
+Discrete_lie_flow_options volume_driver_options(const Volume_flow_settings& S, std::vector<Volume_iteration>* history,
+                                                TetOf tet_of, CgOf cg_of)
+{
+  Discrete_lie_flow_options opt;
+  opt.max_iterations = S.max_iterations;
+  opt.mu = S.mu;
+  if(history || S.callback)
+    opt.callback = [&S, history, tet_of, cg_of](const Discrete_lie_flow_iteration& info) {
+      Volume_iteration I;
+      I.iteration = info.iteration;
+      I.step = info.step;
+      I.critical_step = info.critical_step;
+      I.limiting_tet = tet_of(info.limiting_face);
+      I.d_vol = info.d_area;
+      I.cg_iterations = cg_of();
+      I.seconds = info.seconds;
+      if(history) history->push_back(I);
+      return !(S.callback && !S.callback(I));
+    };
+  return opt;
 }
 
 /// The engine's outcome.
@@ -170,42 +198,19 @@ private:
   std::vector<int> m_order;
 };
 
-/// The volumetric flow's stop test on the plateau: the relative progress
-/// (E_prev − E)/(E − 2) below `plateau` for `plateau_window` iterations in
-/// a row (the surface flows' `Flow_stopping` compares over a window instead).
-class Volume_stopping
-{
-public:
-  explicit Volume_stopping(const Volume_flow_settings& S) : m_plateau(S.plateau), m_window(S.plateau_window) {}
-  void restart(double E) { m_E = E; m_flat = 0; }
-  Discrete_lie_flow_stop_reason after(const Flow_step&, double E)
-  {
-    const double progress = (m_E - E) / (std::max)(E - 2, 1e-300);
-    m_E = E;
-    m_flat = progress < m_plateau ? m_flat + 1 : 0;
-    return m_flat >= m_window ? Discrete_lie_flow_stop_reason::PLATEAU : Discrete_lie_flow_stop_reason::ITERATION_CAP;
-  }
-
-private:
-  double m_plateau;
-  std::size_t m_window;
-  double m_E = 0;
-  std::size_t m_flat = 0;
-};
-
 /// The certified volumetric flow as a policy of `run_flow()` (flow_driver.h;
 /// doc/design.md, "The flow driver"). `x` (every tet positive by the exact
 /// predicate, border points on the unit sphere) is moved in place;
 /// `sum_order` orders the energy's sums (Volume_energy).
-class Volume_certified_flow
+class Volume_certified_flow : public Flow_policy_base
 {
 public:
   Volume_certified_flow(std::vector<Vec3>& x, const std::vector<Tet>& tets, const std::vector<char>& on_border,
                         const std::vector<std::array<int, 3> >& border_faces, const std::vector<double>& target,
                         const Volume_flow_settings& S, std::vector<int> sum_order = std::vector<int>())
-    : m_x(x), m_tets(tets), m_on_border(on_border), m_border_faces(border_faces), m_S(S),
+    : Flow_policy_base(Flow_stopping::plateau_in_a_row(S.plateau_window, S.plateau)), m_x(x), m_tets(tets), m_on_border(on_border), m_border_faces(border_faces), m_S(S),
       m_energy(target, std::move(sum_order)),
-      m_dofs(on_border, false), m_stopping(S), m_grad(tets.size()), m_gv(x.size()), m_x_trial(x.size()), m_M(x.size()),
+      m_dofs(on_border, false), m_grad(tets.size()), m_gv(x.size()), m_x_trial(x.size()), m_M(x.size()),
       m_threads(volume_flow_threads(S.threads, tets.size())), m_coarse(S.coarse_aggregate)
   {
     // Every vertex's corners (4t + j), in increasing t: the per-vertex sums
@@ -220,8 +225,6 @@ public:
       for(int j = 0; j < 4; ++j) m_corners[next[std::size_t(tets[t][std::size_t(j)])]++] = int(4 * t + std::size_t(j));
   }
 
-  Volume_stopping& stopping() { return m_stopping; }
-  bool on_plateau() { return true; }
   double progress() const { return m_E; }
   double d_area() const { return m_E; }  // the record's value: D_vol
   double residual() const { return 0; }  // not part of the volumetric record
@@ -584,7 +587,6 @@ private:
   const Volume_flow_settings& m_S;
   Volume_energy m_energy;
   Volume_dofs m_dofs;
-  Volume_stopping m_stopping;
   std::vector<double> m_u, m_dE, m_w, m_u_trial;
   std::vector<std::array<Vec3, 4> > m_grad;
   std::vector<Vec3> m_gv, m_d, m_x_trial, m_hv;
@@ -679,23 +681,11 @@ inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vect
   std::vector<int> sum_order(tets.size());
   for(std::size_t i = 0; i < tets.size(); ++i) sum_order[std::size_t(tet_order[i])] = int(i);
   Volume_certified_flow flow(xn, tets_n, on_border_n, faces_n, target_n, Sn, std::move(sum_order));
-  Discrete_lie_flow_options opt;
-  opt.max_iterations = S.max_iterations;
   // The driver records the surface flows' iteration; the volumetric one
-  // adds the conjugate-gradient steps.
-  if(history || S.callback)
-    opt.callback = [&](const Discrete_lie_flow_iteration& info) {
-      Volume_iteration I;
-      I.iteration = info.iteration;
-      I.step = info.step;
-      I.critical_step = info.critical_step;
-      I.limiting_tet = info.limiting_face >= 0 ? tet_order[std::size_t(info.limiting_face)] : -1;
-      I.d_vol = info.d_area;
-      I.cg_iterations = flow.last_cg_iterations();
-      I.seconds = info.seconds;
-      if(history) history->push_back(I);
-      return !(S.callback && !S.callback(I));
-    };
+  // adds the conjugate-gradient steps, its tets in the caller's order.
+  const Discrete_lie_flow_options opt = volume_driver_options(
+    S, history, [&tet_order](int f) { return f >= 0 ? tet_order[std::size_t(f)] : -1; },
+    [&flow] { return flow.last_cg_iterations(); });
   const Flow_outcome o = run_flow(flow, opt);
   Volume_flow_outcome out;
   out.stop_reason = o.stop_reason;

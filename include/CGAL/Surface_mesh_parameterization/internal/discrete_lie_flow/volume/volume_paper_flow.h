@@ -352,22 +352,9 @@ inline Volume_flow_outcome run_volume_paper_flow(std::vector<Vec3>& x, const std
                                                  std::vector<Volume_iteration>* history = nullptr)
 {
   const Scoped_blas_threads blas(1, x.size()); // one small factorisation per iteration
-  Discrete_lie_flow_options opt;
-  opt.max_iterations = S.max_iterations;
-  opt.mu = S.mu;
+  const Discrete_lie_flow_options opt =
+    volume_driver_options(S, history, [](int f) { return f; }, [] { return std::size_t(0); });
   Volume_paper_flow flow(x, tets, on_border, border_faces, target, S, opt);
-  if(history || S.callback)
-    opt.callback = [&](const Discrete_lie_flow_iteration& info) {
-      Volume_iteration I;
-      I.iteration = info.iteration;
-      I.step = info.step;
-      I.critical_step = info.critical_step;
-      I.limiting_tet = info.limiting_face;
-      I.d_vol = info.d_area;
-      I.seconds = info.seconds;
-      if(history) history->push_back(I);
-      return !(S.callback && !S.callback(I));
-    };
   const Flow_outcome o = run_flow(flow, opt);
   Volume_flow_outcome out;
   out.stop_reason = o.stop_reason;

@@ -42,23 +42,14 @@ struct Volume_start_info
 /// The border surface that the start maps onto the sphere.
 typedef Surface_mesh<Simple_cartesian<double>::Point_3> Volume_border_mesh;
 
-/// Positions `x` of a certified start (every tet positive by the exact
-/// predicate, border vertices on the unit sphere), or an error code with
-/// `message`. `map_border` maps the closed border surface onto the unit
-/// sphere: `Error_code map_border(const Volume_border_mesh&, sphere_map,
-/// Discrete_lie_flow_report&)`, the sphere map a vertex property map of
-/// points (the public volume parameterizer passes the spherical flow).
-template <class EigenSolver, class BorderToSphere>
-int volume_start(const std::vector<Vec3>& xyz, const std::vector<Tet>& tets, const Ball_topology& topo,
-                 const std::vector<double>& target, const BorderToSphere& map_border,
-                 std::size_t untangle_max_iterations,
-                 const std::function<bool(const Volume_iteration&)>& callback, std::vector<Vec3>& x,
-                 Volume_start_info& info, std::string& message)
+/// The closed border surface of the ball onto the unit sphere by
+/// `map_border` (see `volume_start()`): `x` receives the border vertices'
+/// images (the others at the origin). `OK`, or the code with `message`.
+template <class BorderToSphere>
+int map_volume_border(const std::vector<Vec3>& xyz, const Ball_topology& topo, const BorderToSphere& map_border,
+                      std::vector<Vec3>& x, Volume_start_info& info, std::string& message)
 {
-  typedef std::chrono::steady_clock Clock;
-  Clock::time_point t0 = Clock::now();
   const std::size_t V = xyz.size();
-  // 1. The border surface onto the sphere.
   typedef Volume_border_mesh Border_mesh;
   typedef Border_mesh::Point P3;
   Border_mesh border;
@@ -89,9 +80,15 @@ int volume_start(const std::vector<Vec3>& xyz, const std::vector<Tet>& tets, con
       x[std::size_t(global[i])] = normalized(Vec3{{ p.x(), p.y(), p.z() }});
     }
   }
-  info.seconds_border = std::chrono::duration<double>(Clock::now() - t0).count();
-  t0 = Clock::now();
-  // 2. The interior: every interior vertex at the mean of its neighbours.
+  return OK;
+}
+
+/// Tutte's embedding of the interior: every interior vertex of `x` at the
+/// mean of its neighbours, the border held. `OK`, or the code with `message`.
+template <class EigenSolver>
+int tutte_volume_interior(const Ball_topology& topo, std::vector<Vec3>& x, std::string& message)
+{
+  const std::size_t V = x.size();
   std::vector<int> idx(V, -1);
   int n = 0;
   for(std::size_t v = 0; v < V; ++v)
@@ -133,9 +130,18 @@ int volume_start(const std::vector<Vec3>& xyz, const std::vector<Tet>& tets, con
         if(idx[v] >= 0) x[v][std::size_t(c)] = sol[idx[v]];
     }
   }
-  info.seconds_interior = std::chrono::duration<double>(Clock::now() - t0).count();
-  t0 = Clock::now();
-  // 3. Exact check; untangle the folds.
+  return OK;
+}
+
+/// The exact check of the start `x`; its folds (tets, or border triangles
+/// seen from the centre) untangled (volume_untangle.h). `OK`, or
+/// `ERROR_INITIAL_MAP_FOLDED` with `message` counting what is left.
+inline int certify_volume_start(const std::vector<Vec3>& xyz, const std::vector<Tet>& tets, const Ball_topology& topo,
+                                const std::vector<double>& target, std::size_t untangle_max_iterations,
+                                const std::function<bool(const Volume_iteration&)>& callback, std::vector<Vec3>& x,
+                                Volume_start_info& info, std::string& message)
+{
+  const std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
   const Tet_orientation_counts bad = count_bad_tets(x, tets);
   info.tutte_negative_tets = bad.negative;
   info.tutte_flat_tets = bad.flat;
@@ -152,7 +158,7 @@ int volume_start(const std::vector<Vec3>& xyz, const std::vector<Tet>& tets, con
   const Untangle_outcome out = untangle_volume(x, tets, topo.on_border, topo.border_faces, xyz, target,
                                                untangle_max_iterations, callback);
   info.untangle_iterations = out.iterations;
-  info.seconds_untangle = std::chrono::duration<double>(Clock::now() - t0).count();
+  info.seconds_untangle = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const Tet_orientation_counts after = count_bad_tets(x, tets);
   const std::size_t bad_border = count_bad_border_faces(x, topo.border_faces);
   if(out.stopped && (after.not_positive() != 0 || bad_border != 0)) {
@@ -173,6 +179,31 @@ int volume_start(const std::vector<Vec3>& xyz, const std::vector<Tet>& tets, con
   }
   info.untangled = true;
   return OK;
+}
+
+/// Positions `x` of a certified start (every tet positive by the exact
+/// predicate, border vertices on the unit sphere), or an error code with
+/// `message`. `map_border` maps the closed border surface onto the unit
+/// sphere: `Error_code map_border(const Volume_border_mesh&, sphere_map,
+/// Discrete_lie_flow_report&)`, the sphere map a vertex property map of
+/// points (the public volume parameterizer passes the spherical flow).
+template <class EigenSolver, class BorderToSphere>
+int volume_start(const std::vector<Vec3>& xyz, const std::vector<Tet>& tets, const Ball_topology& topo,
+                 const std::vector<double>& target, const BorderToSphere& map_border,
+                 std::size_t untangle_max_iterations,
+                 const std::function<bool(const Volume_iteration&)>& callback, std::vector<Vec3>& x,
+                 Volume_start_info& info, std::string& message)
+{
+  typedef std::chrono::steady_clock Clock;
+  Clock::time_point t0 = Clock::now();
+  int code = map_volume_border(xyz, topo, map_border, x, info, message);
+  if(code != OK) return code;
+  info.seconds_border = std::chrono::duration<double>(Clock::now() - t0).count();
+  t0 = Clock::now();
+  code = tutte_volume_interior<EigenSolver>(topo, x, message);
+  if(code != OK) return code;
+  info.seconds_interior = std::chrono::duration<double>(Clock::now() - t0).count();
+  return certify_volume_start(xyz, tets, topo, target, untangle_max_iterations, callback, x, info, message);
 }
 
 } // namespace dlf

@@ -24,6 +24,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <deque>
 #include <functional>
@@ -43,33 +44,79 @@ struct Untangle_outcome
   std::size_t regions = 0; ///< sub-problems solved (connected regions around folds, over the stages)
 };
 
-/// The untangling on tets `tets` (the first `real_tets` are the mesh's,
-/// the others cone tets on the fixed centre vertex, whose reference shape is
-/// taken from `cone_reference`).
-inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::vector<Tet>& tets, std::size_t real_tets,
-                                             const std::vector<char>& on_border,
-                                             const std::vector<std::array<int, 3> >& border_faces,
-                                             const std::vector<Vec3>& reference,
-                                             const std::vector<Vec3>& cone_reference, const std::vector<double>& target,
-                                             std::size_t max_iterations,
-                                             const std::function<bool(const Volume_iteration&)>& callback)
+/// The untangling of one problem by L-BFGS on the regularised barrier at
+/// decreasing ε (see the file comment): tets `tets` (the first `real_tets`
+/// are the mesh's, the others cone tets on the fixed centre vertex, whose
+/// reference shape is taken from `cone_reference`); `kind` per vertex: 0
+/// interior, 1 on the sphere, 2 fixed.
+class Volume_untangler
 {
+public:
+  Volume_untangler(std::vector<Vec3>& x, const std::vector<Tet>& tets, std::size_t real_tets,
+                   const std::vector<char>& kind, const std::vector<Vec3>& reference,
+                   const std::vector<Vec3>& cone_reference, const std::vector<double>& target,
+                   std::size_t max_iterations, const std::function<bool(const Volume_iteration&)>& callback)
+    : m_start(Clock::now()), m_x(x), m_tets(tets), m_kind(kind), m_V(x.size()), m_T(tets.size()),
+      m_max_iterations(max_iterations), m_callback(callback), m_A(m_T), m_detA(m_T), m_weight(m_T), m_dets(m_T),
+      m_y(m_V)
+  {
+    reference_shapes(real_tets, reference, cone_reference, target);
+    factor_stiffness();
+  }
+
+  /// Untangles `x` in place; on success with the polish, `x` is the last
+  /// certified position of it.
+  Untangle_outcome run()
+  {
+    m_E = evaluate(m_x, 1, nullptr); // fills the determinants
+    double dmin = *std::min_element(m_dets.begin(), m_dets.end());
+    const double mu0 = 0.1;
+    // ε at most a tenth of the target determinant (1): with a larger ε the
+    // energy hardly sees the small determinants, and the shape term, which
+    // rewards shrinking, pushes the tets that are too small through zero.
+    m_eps = (std::min)(0.1, dmin < mu0 ? 2 * std::sqrt(mu0 * (mu0 - dmin)) : 1e-3);
+    // A round that accepts no step leaves x and, but for ε, everything as it
+    // was: three in a row end the attempt (else the loop would not end).
+    int idle_rounds = 0;
+    while(m_out.iterations < m_max_iterations && idle_rounds < 3) {
+      if(m_polishing) break;
+      const std::size_t round_start = m_out.iterations;
+      if(!round()) return m_out;
+      idle_rounds = m_out.iterations == round_start ? idle_rounds + 1 : 0;
+      // The next ε.
+      evaluate(m_x, m_eps, nullptr);
+      dmin = *std::min_element(m_dets.begin(), m_dets.end());
+      const double sigma = (std::max)(0.1, 1 - m_E / m_E_round);
+      const double mu = (1 - sigma) * Volume_energy::chi(dmin, m_eps);
+      m_eps = (std::min)(0.1, dmin < mu ? 2 * std::sqrt(mu * (mu - dmin)) : 1e-10);
+      if(m_polishing) break;
+      if(dmin > 0 && certified(m_x)) { m_out.success = true; return m_out; }
+    }
+    if(m_polishing) {
+      if(certified(m_x)) m_certified_x = m_x;
+      m_x.swap(m_certified_x);
+      return m_out;
+    }
+    m_out.success = certified(m_x);
+    return m_out;
+  }
+
+private:
   typedef std::chrono::steady_clock Clock;
-  const Clock::time_point start = Clock::now();
-  const std::size_t V = x.size(), T = tets.size();
-  const double theta = 0.25;
-  Untangle_outcome out;
-  // Per tet: A = (s R)⁻¹ with R the reference edge matrix scaled so that det(sR) is the target share of U.
-  std::vector<Eigen::Matrix3d> A(T);
-  std::vector<double> detA(T), weight(T);
+  enum Iteration_result { NEXT_ITERATION, END_ROUND, STOPPED };
+
+  // Per tet: A = (s R)⁻¹ with R the reference edge matrix scaled so that
+  // det(sR) is the target share of U.
+  void reference_shapes(std::size_t real_tets, const std::vector<Vec3>& reference,
+                        const std::vector<Vec3>& cone_reference, const std::vector<double>& target)
   {
     double U = 0, Tsum = 0;
     std::vector<double> u;
-    tet_dets(x, tets, u);
+    tet_dets(m_x, m_tets, u);
     for(std::size_t t = 0; t < real_tets; ++t) U += u[t];
-    for(std::size_t t = 0; t < T; ++t) Tsum += target[t];
-    for(std::size_t t = 0; t < T; ++t) {
-      const Tet& k = tets[t];
+    for(std::size_t t = 0; t < m_T; ++t) Tsum += target[t];
+    for(std::size_t t = 0; t < m_T; ++t) {
+      const Tet& k = m_tets[t];
       const std::vector<Vec3>& P = t < real_tets ? reference : cone_reference;
       Eigen::Matrix3d R;
       for(int j = 0; j < 3; ++j)
@@ -77,11 +124,12 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
           R(c, j) = P[std::size_t(k[std::size_t(j + 1)])][std::size_t(c)] - P[std::size_t(k[0])][std::size_t(c)];
       const double share = target[t] / Tsum;
       const double s = std::cbrt(share * U / R.determinant());
-      A[t] = (s * R).inverse();
-      detA[t] = A[t].determinant();
-      weight[t] = share;
+      m_A[t] = (s * R).inverse();
+      m_detA[t] = m_A[t].determinant();
+      m_weight[t] = share;
     }
   }
+
   // The L-BFGS's initial inverse Hessian γ L⁻¹, L the stiffness of the
   // shape term at the reference: Σ_t weight_t B_t B_tᵀ, the rows of B_t the
   // gradients of the tet's barycentric coordinates in its scaled reference
@@ -89,83 +137,86 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
   // the three coordinates, the fixed vertices eliminated; factorised once.
   // On Mesh_3's graded meshes it makes the steps independent of the
   // element sizes, which plain L-BFGS's are not.
-  std::vector<int> dof(V, -1);
-  int ndof = 0;
-  for(std::size_t v = 0; v < V; ++v) if(on_border[v] != 2) dof[v] = ndof++;
-  Default_spd_solver stiffness;
-  Sparse_matrix L; // lower triangle
-  bool preconditioned = false;
-  if(ndof > 0) {
+  void factor_stiffness()
+  {
+    m_dof.assign(m_V, -1);
+    for(std::size_t v = 0; v < m_V; ++v) if(m_kind[v] != 2) m_dof[v] = m_ndof++;
+    if(m_ndof == 0) return;
     std::vector<Eigen::Triplet<double> > entries;
-    std::vector<double> diagonal(std::size_t(ndof), 0.);
-    for(std::size_t t = 0; t < T; ++t) {
-      const Tet& k = tets[t];
+    std::vector<double> diagonal(std::size_t(m_ndof), 0.);
+    for(std::size_t t = 0; t < m_T; ++t) {
+      const Tet& k = m_tets[t];
       Eigen::Matrix<double, 4, 3> B; // rows: ∇β_0 … ∇β_3
-      B.block<3, 3>(1, 0) = A[t];
-      B.row(0) = -(A[t].row(0) + A[t].row(1) + A[t].row(2));
-      const Eigen::Matrix4d K = weight[t] * B * B.transpose();
+      B.block<3, 3>(1, 0) = m_A[t];
+      B.row(0) = -(m_A[t].row(0) + m_A[t].row(1) + m_A[t].row(2));
+      const Eigen::Matrix4d K = m_weight[t] * B * B.transpose();
       for(int a = 0; a < 4; ++a) {
-        const int i = dof[std::size_t(k[std::size_t(a)])];
+        const int i = m_dof[std::size_t(k[std::size_t(a)])];
         if(i < 0) continue;
         for(int b = 0; b < 4; ++b) {
-          const int j = dof[std::size_t(k[std::size_t(b)])];
+          const int j = m_dof[std::size_t(k[std::size_t(b)])];
           if(j >= 0 && j <= i) entries.emplace_back(i, j, K(a, b));
         }
         diagonal[std::size_t(i)] += K(a, a);
       }
     }
-    for(int i = 0; i < ndof; ++i) entries.emplace_back(i, i, 1e-8 * diagonal[std::size_t(i)] + 1e-300);
-    L.resize(ndof, ndof);
-    L.setFromTriplets(entries.begin(), entries.end());
-    stiffness.compute(L);
-    preconditioned = stiffness.info() == Eigen::Success;
+    for(int i = 0; i < m_ndof; ++i) entries.emplace_back(i, i, 1e-8 * diagonal[std::size_t(i)] + 1e-300);
+    m_L.resize(m_ndof, m_ndof);
+    m_L.setFromTriplets(entries.begin(), entries.end());
+    m_stiffness.compute(m_L);
+    m_preconditioned = m_stiffness.info() == Eigen::Success;
   }
+
   // dir ← P L⁻¹ P dir (P: the tangent planes of the border vertices).
-  Eigen::MatrixXd rhs;
-  auto apply_stiffness_inverse = [&](std::vector<Vec3>& dir) {
-    rhs.resize(ndof, 3);
-    for(std::size_t v = 0; v < V; ++v)
-      if(dof[v] >= 0) for(int c = 0; c < 3; ++c) rhs(dof[v], c) = dir[v][std::size_t(c)];
-    const Eigen::MatrixXd sol = stiffness.solve(rhs);
-    for(std::size_t v = 0; v < V; ++v)
-      if(dof[v] >= 0) for(int c = 0; c < 3; ++c) dir[v][std::size_t(c)] = sol(dof[v], c);
+  void apply_stiffness_inverse(std::vector<Vec3>& dir)
+  {
+    m_rhs.resize(m_ndof, 3);
+    for(std::size_t v = 0; v < m_V; ++v)
+      if(m_dof[v] >= 0) for(int c = 0; c < 3; ++c) m_rhs(m_dof[v], c) = dir[v][std::size_t(c)];
+    const Eigen::MatrixXd sol = m_stiffness.solve(m_rhs);
+    for(std::size_t v = 0; v < m_V; ++v)
+      if(m_dof[v] >= 0) for(int c = 0; c < 3; ++c) dir[v][std::size_t(c)] = sol(m_dof[v], c);
       else dir[v] = {{ 0, 0, 0 }};
-  };
+  }
+
   // sᵀ L s, for the scale of H₀ = γ L⁻¹: γ = sᵀLs / sᵀy (the curvature along
   // s over the stiffness's), without a second solve.
-  auto stiffness_norm = [&](const std::vector<Vec3>& sk) {
-    Eigen::MatrixXd S(ndof, 3);
-    for(std::size_t v = 0; v < V; ++v)
-      if(dof[v] >= 0) for(int c = 0; c < 3; ++c) S(dof[v], c) = sk[v][std::size_t(c)];
-    const Eigen::MatrixXd LS = L.selfadjointView<Eigen::Lower>() * S;
+  double stiffness_norm(const std::vector<Vec3>& sk) const
+  {
+    Eigen::MatrixXd S(m_ndof, 3);
+    for(std::size_t v = 0; v < m_V; ++v)
+      if(m_dof[v] >= 0) for(int c = 0; c < 3; ++c) S(m_dof[v], c) = sk[v][std::size_t(c)];
+    const Eigen::MatrixXd LS = m_L.selfadjointView<Eigen::Lower>() * S;
     return (S.array() * LS.array()).sum();
-  };
-  // Energy and gradient (per vertex, ambient) at fixed ε.
-  std::vector<double> dets(T);
-  auto evaluate = [&](const std::vector<Vec3>& y, double eps, std::vector<Vec3>* grad) {
+  }
+
+  // Energy and gradient (per vertex, ambient) at fixed ε; the tets'
+  // regularised determinants into m_dets.
+  double evaluate(const std::vector<Vec3>& y, double eps, std::vector<Vec3>* grad)
+  {
     double E = 0;
-    if(grad) grad->assign(V, Vec3{{ 0, 0, 0 }});
-    for(std::size_t t = 0; t < T; ++t) {
-      const Tet& k = tets[t];
+    if(grad) grad->assign(m_V, Vec3{{ 0, 0, 0 }});
+    for(std::size_t t = 0; t < m_T; ++t) {
+      const Tet& k = m_tets[t];
       const Vec3& a = y[std::size_t(k[0])];
       Eigen::Matrix3d X;
       for(int j = 0; j < 3; ++j)
         for(int c = 0; c < 3; ++c) X(c, j) = y[std::size_t(k[std::size_t(j + 1)])][std::size_t(c)] - a[std::size_t(c)];
-      const Eigen::Matrix3d J = X * A[t];
-      const double d = X.determinant() * detA[t];
-      dets[t] = d;
+      const Eigen::Matrix3d J = X * m_A[t];
+      const double d = X.determinant() * m_detA[t];
+      m_dets[t] = d;
       const double chi = Volume_energy::chi(d, eps), dchi = Volume_energy::dchi(d, eps);
       if(!(chi > 0)) return std::numeric_limits<double>::infinity();
       const double s = J.squaredNorm();
       const double c23 = std::cbrt(chi * chi);
       const double f = s / c23, g = (d * d + 1) / chi;
-      E += weight[t] * ((1 - theta) * f + theta * g);
+      E += m_weight[t] * ((1 - m_theta) * f + m_theta * g);
       if(!grad) continue;
       // ∂/∂X: shape 2 J Aᵀ / χ^{2/3}; determinant terms times ∂d/∂X = detA·cof(X).
       const double df_dd = -(2. / 3.) * s * dchi / (c23 * chi);
       const double dg_dd = 2 * d / chi - (d * d + 1) * dchi / (chi * chi);
-      const double dd = weight[t] * ((1 - theta) * df_dd + theta * dg_dd) * detA[t];
-      const Eigen::Matrix3d GS = weight[t] * (1 - theta) * 2 * J * A[t].transpose() / c23;
+      const double dd = m_weight[t] * ((1 - m_theta) * df_dd + m_theta * dg_dd) * m_detA[t];
+      const Eigen::Matrix3d GS = m_weight[t] * (1 - m_theta) * 2 * J * m_A[t].transpose() / c23;
       const Vec3 e1 = {{ X(0, 0), X(1, 0), X(2, 0) }}, e2 = {{ X(0, 1), X(1, 1), X(2, 1) }}, e3 = {{ X(0, 2), X(1, 2), X(2, 2) }};
       const Vec3 cof[3] = { cross(e2, e3), cross(e3, e1), cross(e1, e2) };
       for(int j = 0; j < 3; ++j) {
@@ -179,175 +230,416 @@ inline Untangle_outcome untangle_volume_impl(std::vector<Vec3>& x, const std::ve
       }
     }
     return E;
-  };
-  auto project = [&](const std::vector<Vec3>& y, std::vector<Vec3>& g) {
-    for(std::size_t v = 0; v < V; ++v)
-      if(on_border[v] == 2) {
+  }
+
+  // The fixed vertices' components zeroed, the border's projected on the
+  // tangent planes of the sphere at `y`.
+  void project(const std::vector<Vec3>& y, std::vector<Vec3>& g) const
+  {
+    for(std::size_t v = 0; v < m_V; ++v)
+      if(m_kind[v] == 2) {
         g[v] = {{ 0, 0, 0 }};
-      } else if(on_border[v]) {
+      } else if(m_kind[v]) {
         const Vec3 n = normalized(y[v]);
         const double k = dot(g[v], n);
         for(int c = 0; c < 3; ++c) g[v][std::size_t(c)] -= k * n[std::size_t(c)];
       }
-  };
-  auto inner = [](const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+  }
+
+  static double inner(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
+  {
     double s = 0;
     for(std::size_t i = 0; i < a.size(); ++i) s += dot(a[i], b[i]);
     return s;
-  };
-  auto certified = [&](const std::vector<Vec3>& y) {
-    for(double d : dets) if(!(d > 0)) return false;
-    return count_bad_tets(y, tets).not_positive() == 0;
-  };
-  (void)border_faces; // in `tets` as cone tets
-  std::vector<Vec3> g, g_new, dir, y(V);
-  double E = evaluate(x, 1, nullptr); // fills dets
-  double dmin = *std::min_element(dets.begin(), dets.end());
-  const double mu0 = 0.1;
-  // ε at most a tenth of the target determinant (1): with a larger ε the
-  // energy hardly sees the small determinants, and the shape term, which
-  // rewards shrinking, pushes the tets that are too small through zero.
-  double eps = (std::min)(0.1, dmin < mu0 ? 2 * std::sqrt(mu0 * (mu0 - dmin)) : 1e-3);
-  bool polishing = false;
-  std::size_t polished = 0;
-  std::vector<Vec3> certified_x;
-  // A round that accepts no step leaves x and, but for ε, everything as it
-  // was: three in a row end the attempt (else the loop would not end).
-  int idle_rounds = 0;
-  while(out.iterations < max_iterations && idle_rounds < 3) {
-    if(polishing) break;
-    ++out.rounds;
-    const std::size_t round_start = out.iterations;
-    E = evaluate(x, eps, &g);
-    project(x, g);
-    const double E_round = E;
-    std::deque<std::pair<std::vector<Vec3>, std::vector<Vec3> > > memory; // (s_k, y_k)
-    std::deque<double> memory_sls; // s_kᵀ L s_k
-    for(int it = 0; it < 200 && out.iterations < max_iterations; ++it) {
-      // Two-loop recursion.
-      dir = g;
-      std::vector<double> alpha(memory.size());
-      for(std::size_t m = memory.size(); m-- > 0;) {
-        const double rho = 1 / inner(memory[m].second, memory[m].first);
-        alpha[m] = rho * inner(memory[m].first, dir);
-        for(std::size_t i = 0; i < V; ++i)
-          for(int c = 0; c < 3; ++c) dir[i][std::size_t(c)] -= alpha[m] * memory[m].second[i][std::size_t(c)];
-      }
-      if(preconditioned) {
-        project(x, dir);
-        apply_stiffness_inverse(dir);
-        project(x, dir);
-        if(!memory.empty()) {
-          const double gamma = memory_sls.back() / inner(memory.back().first, memory.back().second);
-          for(Vec3& v : dir) for(double& c : v) c *= gamma;
-        }
-      } else if(!memory.empty()) {
-        const double gamma = inner(memory.back().first, memory.back().second) / inner(memory.back().second, memory.back().second);
-        for(Vec3& v : dir) for(double& c : v) c *= gamma;
-      }
-      for(std::size_t m = 0; m < memory.size(); ++m) {
-        const double rho = 1 / inner(memory[m].second, memory[m].first);
-        const double beta = rho * inner(memory[m].second, dir);
-        for(std::size_t i = 0; i < V; ++i)
-          for(int c = 0; c < 3; ++c) dir[i][std::size_t(c)] += (alpha[m] - beta) * memory[m].first[i][std::size_t(c)];
-      }
-      for(Vec3& v : dir) for(double& c : v) c = -c;
-      project(x, dir);
-      double slope = inner(g, dir);
-      if(!(slope < 0)) { // not a descent direction: the gradient
-        memory.clear();
-        memory_sls.clear();
-        dir = g;
-        for(Vec3& v : dir) for(double& c : v) c = -c;
-        slope = inner(g, dir);
-      }
-      double dmax = 0;
-      for(const Vec3& v : dir) dmax = (std::max)(dmax, norm3(v));
-      if(!(dmax > 0)) break;
-      double step = (std::min)(1., 0.05 / dmax);
-      if(memory.empty()) step = (std::min)(step, 0.01 / dmax);
-      double E_new = E;
-      bool ok = false;
-      for(int tries = 0; tries < 40; ++tries, step *= 0.5) {
-        for(std::size_t v = 0; v < V; ++v) {
-          const Vec3 p = {{ x[v][0] + step * dir[v][0], x[v][1] + step * dir[v][1], x[v][2] + step * dir[v][2] }};
-          y[v] = on_border[v] == 1 ? normalized(p) : p;
-        }
-        E_new = evaluate(y, eps, &g_new);
-        if(E_new <= E + 1e-4 * step * slope) { ok = true; break; }
-      }
-      if(!ok) break;
-      ++out.iterations;
-      project(y, g_new);
-      std::vector<Vec3> sk(V), yk(V);
-      for(std::size_t v = 0; v < V; ++v) {
-        sk[v] = sub(y[v], x[v]);
-        yk[v] = sub(g_new[v], g[v]);
-      }
-      if(inner(sk, yk) > 1e-300) {
-        if(preconditioned) {
-          memory_sls.push_back(stiffness_norm(sk));
-          if(memory_sls.size() > 8) memory_sls.pop_front();
-        }
-        memory.emplace_back(std::move(sk), std::move(yk));
-        if(memory.size() > 8) memory.pop_front();
-      }
-      x.swap(y);
-      g.swap(g_new);
-      const double drop = (E - E_new) / std::abs(E);
-      E = E_new;
-      std::size_t negative = 0;
-      for(double d : dets) negative += (d <= 0);
-      if(callback) {
-        Volume_iteration I;
-        I.iteration = out.iterations;
-        I.step = step;
-        I.d_vol = E;
-        I.epsilon = eps;
-        I.untangling = true;
-        I.negative_tets = negative;
-        I.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-        if(!callback(I)) { out.stopped = true; return out; }
-      }
-      if(polishing) {
-        if(out.iterations % 10 == 0 && certified(x)) certified_x = x;
-        if(drop < 1e-5 || ++polished >= 200) break;
-        continue;
-      }
-      if(negative == 0 && certified(x)) {
-        // Untangled. Then the pure barrier (ε = 0) from there for a while:
-        // it moves every tet and border triangle away from flat, which
-        // leaves the flow room to move.
-        out.success = true;
-        certified_x = x;
-        polishing = true;
-        eps = 0;
-        E = evaluate(x, eps, &g);
-        project(x, g);
-        memory.clear();
-        memory_sls.clear();
-        continue;
-      }
-      if(drop < 1e-6) break;
-    }
-    idle_rounds = out.iterations == round_start ? idle_rounds + 1 : 0;
-    // The next ε.
-    evaluate(x, eps, nullptr);
-    dmin = *std::min_element(dets.begin(), dets.end());
-    const double sigma = (std::max)(0.1, 1 - E / E_round);
-    const double mu = (1 - sigma) * Volume_energy::chi(dmin, eps);
-    eps = (std::min)(0.1, dmin < mu ? 2 * std::sqrt(mu * (mu - dmin)) : 1e-10);
-    if(polishing) break;
-    if(dmin > 0 && certified(x)) { out.success = true; return out; }
   }
-  if(polishing) {
-    if(certified(x)) certified_x = x;
-    x.swap(certified_x);
+
+  // Every determinant of the last evaluation positive, and every tet of `y`
+  // by the exact predicate.
+  bool certified(const std::vector<Vec3>& y) const
+  {
+    for(double d : m_dets) if(!(d > 0)) return false;
+    return count_bad_tets(y, m_tets).not_positive() == 0;
+  }
+
+  // The L-BFGS direction from the gradient m_g (two-loop recursion, the
+  // initial inverse Hessian γ L⁻¹ or the scalar γ), projected; the slope
+  // gᵀd into `slope` (the gradient itself when that is not a descent).
+  void direction(double& slope)
+  {
+    m_dir = m_g;
+    std::vector<double> alpha(m_memory.size());
+    for(std::size_t m = m_memory.size(); m-- > 0;) {
+      const double rho = 1 / inner(m_memory[m].second, m_memory[m].first);
+      alpha[m] = rho * inner(m_memory[m].first, m_dir);
+      for(std::size_t i = 0; i < m_V; ++i)
+        for(int c = 0; c < 3; ++c) m_dir[i][std::size_t(c)] -= alpha[m] * m_memory[m].second[i][std::size_t(c)];
+    }
+    if(m_preconditioned) {
+      project(m_x, m_dir);
+      apply_stiffness_inverse(m_dir);
+      project(m_x, m_dir);
+      if(!m_memory.empty()) {
+        const double gamma = m_memory_sls.back() / inner(m_memory.back().first, m_memory.back().second);
+        for(Vec3& v : m_dir) for(double& c : v) c *= gamma;
+      }
+    } else if(!m_memory.empty()) {
+      const double gamma = inner(m_memory.back().first, m_memory.back().second) /
+                           inner(m_memory.back().second, m_memory.back().second);
+      for(Vec3& v : m_dir) for(double& c : v) c *= gamma;
+    }
+    for(std::size_t m = 0; m < m_memory.size(); ++m) {
+      const double rho = 1 / inner(m_memory[m].second, m_memory[m].first);
+      const double beta = rho * inner(m_memory[m].second, m_dir);
+      for(std::size_t i = 0; i < m_V; ++i)
+        for(int c = 0; c < 3; ++c) m_dir[i][std::size_t(c)] += (alpha[m] - beta) * m_memory[m].first[i][std::size_t(c)];
+    }
+    for(Vec3& v : m_dir) for(double& c : v) c = -c;
+    project(m_x, m_dir);
+    slope = inner(m_g, m_dir);
+    if(!(slope < 0)) { // not a descent direction: the gradient
+      m_memory.clear();
+      m_memory_sls.clear();
+      m_dir = m_g;
+      for(Vec3& v : m_dir) for(double& c : v) c = -c;
+      slope = inner(m_g, m_dir);
+    }
+  }
+
+  // Backtracking from `step` to the Armijo condition (at most 40 halvings):
+  // the trial into m_y and its energy into `E_new`; false if none passed.
+  bool line_search(double slope, double& step, double& E_new)
+  {
+    for(int tries = 0; tries < 40; ++tries, step *= 0.5) {
+      for(std::size_t v = 0; v < m_V; ++v) {
+        const Vec3 p = {{ m_x[v][0] + step * m_dir[v][0], m_x[v][1] + step * m_dir[v][1], m_x[v][2] + step * m_dir[v][2] }};
+        m_y[v] = m_kind[v] == 1 ? normalized(p) : p;
+      }
+      E_new = evaluate(m_y, m_eps, &m_g_new);
+      if(E_new <= m_E + 1e-4 * step * slope) return true;
+    }
+    return false;
+  }
+
+  // The pair (s_k, y_k) of the accepted step into the memory (at most 8).
+  void remember()
+  {
+    std::vector<Vec3> sk(m_V), yk(m_V);
+    for(std::size_t v = 0; v < m_V; ++v) {
+      sk[v] = sub(m_y[v], m_x[v]);
+      yk[v] = sub(m_g_new[v], m_g[v]);
+    }
+    if(inner(sk, yk) > 1e-300) {
+      if(m_preconditioned) {
+        m_memory_sls.push_back(stiffness_norm(sk));
+        if(m_memory_sls.size() > 8) m_memory_sls.pop_front();
+      }
+      m_memory.emplace_back(std::move(sk), std::move(yk));
+      if(m_memory.size() > 8) m_memory.pop_front();
+    }
+  }
+
+  // The callback's record of the iteration; false: stop.
+  bool report(double step, std::size_t negative) const
+  {
+    if(!m_callback) return true;
+    Volume_iteration I;
+    I.iteration = m_out.iterations;
+    I.step = step;
+    I.d_vol = m_E;
+    I.epsilon = m_eps;
+    I.untangling = true;
+    I.negative_tets = negative;
+    I.seconds = std::chrono::duration<double>(Clock::now() - m_start).count();
+    return m_callback(I);
+  }
+
+  // One L-BFGS iteration at the round's ε.
+  Iteration_result iterate()
+  {
+    double slope = 0;
+    direction(slope);
+    double dmax = 0;
+    for(const Vec3& v : m_dir) dmax = (std::max)(dmax, norm3(v));
+    if(!(dmax > 0)) return END_ROUND;
+    double step = (std::min)(1., 0.05 / dmax);
+    if(m_memory.empty()) step = (std::min)(step, 0.01 / dmax);
+    double E_new = m_E;
+    if(!line_search(slope, step, E_new)) return END_ROUND;
+    ++m_out.iterations;
+    project(m_y, m_g_new);
+    remember();
+    m_x.swap(m_y);
+    m_g.swap(m_g_new);
+    const double drop = (m_E - E_new) / std::abs(m_E);
+    m_E = E_new;
+    std::size_t negative = 0;
+    for(double d : m_dets) negative += (d <= 0);
+    if(!report(step, negative)) { m_out.stopped = true; return STOPPED; }
+    if(m_polishing) {
+      if(m_out.iterations % 10 == 0 && certified(m_x)) m_certified_x = m_x;
+      if(drop < 1e-5 || ++m_polished >= 200) return END_ROUND;
+      return NEXT_ITERATION;
+    }
+    if(negative == 0 && certified(m_x)) {
+      // Untangled. Then the pure barrier (ε = 0) from there for a while:
+      // it moves every tet and border triangle away from flat, which
+      // leaves the flow room to move.
+      m_out.success = true;
+      m_certified_x = m_x;
+      m_polishing = true;
+      m_eps = 0;
+      m_E = evaluate(m_x, m_eps, &m_g);
+      project(m_x, m_g);
+      m_memory.clear();
+      m_memory_sls.clear();
+      return NEXT_ITERATION;
+    }
+    return drop < 1e-6 ? END_ROUND : NEXT_ITERATION;
+  }
+
+  // A round at fixed ε: at most 200 iterations from a fresh memory; the
+  // round's starting energy into m_E_round. False when the callback stopped.
+  bool round()
+  {
+    ++m_out.rounds;
+    m_E = evaluate(m_x, m_eps, &m_g);
+    project(m_x, m_g);
+    m_E_round = m_E;
+    m_memory.clear();
+    m_memory_sls.clear();
+    for(int it = 0; it < 200 && m_out.iterations < m_max_iterations; ++it) {
+      const Iteration_result r = iterate();
+      if(r == STOPPED) return false;
+      if(r == END_ROUND) break;
+    }
+    return true;
+  }
+
+  const Clock::time_point m_start;
+  std::vector<Vec3>& m_x;
+  const std::vector<Tet>& m_tets;
+  const std::vector<char>& m_kind;
+  const std::size_t m_V, m_T;
+  const std::size_t m_max_iterations;
+  const std::function<bool(const Volume_iteration&)>& m_callback;
+  const double m_theta = 0.25;
+  std::vector<Eigen::Matrix3d> m_A;
+  std::vector<double> m_detA, m_weight, m_dets;
+  std::vector<int> m_dof;
+  int m_ndof = 0;
+  Default_spd_solver m_stiffness;
+  Sparse_matrix m_L; // lower triangle
+  bool m_preconditioned = false;
+  Eigen::MatrixXd m_rhs;
+  std::vector<Vec3> m_g, m_g_new, m_dir, m_y, m_certified_x;
+  std::deque<std::pair<std::vector<Vec3>, std::vector<Vec3> > > m_memory; // (s_k, y_k)
+  std::deque<double> m_memory_sls; // s_kᵀ L s_k
+  double m_E = 0, m_E_round = 0, m_eps = 0;
+  bool m_polishing = false;
+  std::size_t m_polished = 0;
+  Untangle_outcome m_out;
+};
+
+/// The untangling of a whole start by stages and regions (see
+/// `untangle_volume()`): the folds' neighbourhoods, their connected regions,
+/// each region's sub-problem solved by `Volume_untangler` with its
+/// neighbours held.
+class Volume_region_untangling
+{
+public:
+  Volume_region_untangling(std::vector<Vec3>& x, const std::vector<Tet>& tets, const std::vector<char>& on_border,
+                           const std::vector<std::array<int, 3> >& border_faces, const std::vector<Vec3>& reference,
+                           const std::vector<double>& target, const std::function<bool(const Volume_iteration&)>& callback)
+    : m_x(x), m_tets(tets), m_on_border(on_border), m_border_faces(border_faces), m_reference(reference),
+      m_target(target), m_callback(callback), m_vertex_tets(x.size()), m_vertex_faces(x.size()),
+      m_region(x.size(), -1), m_local(x.size(), -1), m_tet_taken(tets.size(), 0), m_face_taken(border_faces.size(), 0)
+  {
+    double Tsum = 0;
+    for(double a : target) Tsum += a;
+    m_cone_weight = 0.1 * Tsum / double((std::max)(border_faces.size(), std::size_t(1)));
+    for(std::size_t t = 0; t < tets.size(); ++t)
+      for(int v : tets[t]) m_vertex_tets[std::size_t(v)].push_back(int(t));
+    for(std::size_t f = 0; f < border_faces.size(); ++f)
+      for(int v : border_faces[f]) m_vertex_faces[std::size_t(v)].push_back(int(f));
+  }
+
+  Untangle_outcome run(std::size_t max_iterations)
+  {
+    for(int rings : { 1, 3, 6, 12, -1 }) {
+      if(m_total.iterations >= max_iterations) break;
+      if(!movable_vertices(rings)) { m_total.success = true; return m_total; }
+      bool all_certified = true;
+      for(const std::vector<int>& members : movable_regions()) {
+        if(m_total.iterations >= max_iterations) { all_certified = false; break; }
+        const Untangle_outcome out = untangle_region(members, max_iterations);
+        if(out.stopped) { m_total.stopped = true; return m_total; }
+        all_certified = all_certified && out.success;
+      }
+      if(all_certified) {
+        m_total.success = true;
+        return m_total;
+      }
+    }
+    return m_total;
+  }
+
+private:
+  // The folded tets' and cones' vertices, grown by `rings` rings (−1: every
+  // vertex), into m_movable; false when nothing is folded.
+  bool movable_vertices(int rings)
+  {
+    const std::size_t V = m_x.size();
+    const std::vector<Vec3>& x = m_x;
+    m_movable.assign(V, 0);
+    std::vector<int> front;
+    for(const Tet& k : m_tets)
+      if(exact_tet_orientation(x[std::size_t(k[0])], x[std::size_t(k[1])], x[std::size_t(k[2])], x[std::size_t(k[3])]) != POSITIVE)
+        for(int v : k) if(!m_movable[std::size_t(v)]) { m_movable[std::size_t(v)] = 1; front.push_back(v); }
+    for(const auto& f : m_border_faces)
+      if(exact_tet_orientation(m_o, x[std::size_t(f[0])], x[std::size_t(f[1])], x[std::size_t(f[2])]) != POSITIVE)
+        for(int v : f) if(!m_movable[std::size_t(v)]) { m_movable[std::size_t(v)] = 1; front.push_back(v); }
+    if(front.empty()) return false;
+    if(rings < 0) std::fill(m_movable.begin(), m_movable.end(), 1);
+    for(int r = 0; r < rings; ++r) {
+      std::vector<int> next;
+      for(int v : front)
+        for(int t : m_vertex_tets[std::size_t(v)])
+          for(int w : m_tets[std::size_t(t)])
+            if(!m_movable[std::size_t(w)]) { m_movable[std::size_t(w)] = 1; next.push_back(w); }
+      front.swap(next);
+    }
+    return true;
+  }
+
+  // The connected regions of movable vertices (two movable vertices of one
+  // tet are in one region).
+  std::vector<std::vector<int> > movable_regions()
+  {
+    const std::size_t V = m_x.size();
+    std::fill(m_region.begin(), m_region.end(), -1);
+    std::vector<std::vector<int> > regions;
+    for(std::size_t s = 0; s < V; ++s) {
+      if(!m_movable[s] || m_region[s] >= 0) continue;
+      std::vector<int> members(1, int(s));
+      m_region[s] = int(regions.size());
+      for(std::size_t i = 0; i < members.size(); ++i)
+        for(int t : m_vertex_tets[std::size_t(members[i])])
+          for(int w : m_tets[std::size_t(t)])
+            if(m_movable[std::size_t(w)] && m_region[std::size_t(w)] < 0) {
+              m_region[std::size_t(w)] = m_region[s];
+              members.push_back(w);
+            }
+      regions.push_back(std::move(members));
+    }
+    return regions;
+  }
+
+  // A region's sub-problem: the tets with a vertex in it, their vertices
+  // (the others fixed), the border triangles with a vertex in it as cones on
+  // a fixed centre vertex.
+  struct Sub_problem
+  {
+    std::vector<int> global;
+    std::vector<Tet> tets;
+    std::vector<double> target;
+    std::vector<Vec3> x, reference, cone_reference;
+    std::vector<char> kind;
+    std::size_t real_tets = 0;
+  };
+
+  int local_index(Sub_problem& P, int v)
+  {
+    if(m_local[std::size_t(v)] < 0) {
+      m_local[std::size_t(v)] = int(P.global.size());
+      P.global.push_back(v);
+      P.x.push_back(m_x[std::size_t(v)]);
+      P.reference.push_back(m_reference[std::size_t(v)]);
+      P.kind.push_back(m_movable[std::size_t(v)] ? char(m_on_border[std::size_t(v)] ? 1 : 0) : char(2));
+    }
+    return m_local[std::size_t(v)];
+  }
+
+  void make_sub_problem(const std::vector<int>& members, Sub_problem& P)
+  {
+    std::vector<int> tet_ids, face_ids;
+    for(int v : members)
+      for(int t : m_vertex_tets[std::size_t(v)])
+        if(!m_tet_taken[std::size_t(t)]) { m_tet_taken[std::size_t(t)] = 1; tet_ids.push_back(t); }
+    std::sort(tet_ids.begin(), tet_ids.end()); // the input's order, for the sub-problem's fill-in
+    for(int t : tet_ids) {
+      const Tet& k = m_tets[std::size_t(t)];
+      P.tets.push_back({{ local_index(P, k[0]), local_index(P, k[1]), local_index(P, k[2]), local_index(P, k[3]) }});
+      P.target.push_back(m_target[std::size_t(t)]);
+    }
+    P.real_tets = P.tets.size();
+    for(int v : members)
+      for(int f : m_vertex_faces[std::size_t(v)])
+        if(!m_face_taken[std::size_t(f)]) { m_face_taken[std::size_t(f)] = 1; face_ids.push_back(f); }
+    std::sort(face_ids.begin(), face_ids.end());
+    std::vector<std::array<int, 3> > faces;
+    for(int fi : face_ids) {
+      const auto& f = m_border_faces[std::size_t(fi)];
+      faces.push_back({{ local_index(P, f[0]), local_index(P, f[1]), local_index(P, f[2]) }});
+    }
+    for(int t : tet_ids) m_tet_taken[std::size_t(t)] = 0;
+    for(int f : face_ids) m_face_taken[std::size_t(f)] = 0;
+    const int centre = int(P.x.size());
+    P.x.push_back(m_o);
+    P.reference.push_back(m_o);
+    P.kind.push_back(2);
+    P.cone_reference = P.x;
+    for(const auto& f : faces) {
+      P.tets.push_back({{ centre, f[0], f[1], f[2] }});
+      P.target.push_back(m_cone_weight);
+    }
+  }
+
+  // Untangles one region; its result, certified or not, is where the next
+  // stage starts (the others did not move): success is checked on the whole.
+  Untangle_outcome untangle_region(const std::vector<int>& members, std::size_t max_iterations)
+  {
+    Sub_problem P;
+    make_sub_problem(members, P);
+    // The callback counts the iterations of every region and stage.
+    const std::size_t offset = m_total.iterations;
+    std::function<bool(const Volume_iteration&)> counted;
+    if(m_callback)
+      counted = [&](const Volume_iteration& I) {
+        Volume_iteration J = I;
+        J.iteration += offset;
+        return m_callback(J);
+      };
+    const Untangle_outcome out = Volume_untangler(P.x, P.tets, P.real_tets, P.kind, P.reference, P.cone_reference,
+                                                  P.target, (std::min)(m_stage_cap, max_iterations - m_total.iterations),
+                                                  counted).run();
+    m_total.iterations += out.iterations;
+    m_total.rounds += out.rounds;
+    ++m_total.regions;
+    for(std::size_t i = 0; i < P.global.size(); ++i) {
+      m_x[std::size_t(P.global[i])] = P.x[i];
+      m_local[std::size_t(P.global[i])] = -1;
+    }
     return out;
   }
-  out.success = certified(x);
-  return out;
-}
+
+  std::vector<Vec3>& m_x;
+  const std::vector<Tet>& m_tets;
+  const std::vector<char>& m_on_border;
+  const std::vector<std::array<int, 3> >& m_border_faces;
+  const std::vector<Vec3>& m_reference;
+  const std::vector<double>& m_target;
+  const std::function<bool(const Volume_iteration&)>& m_callback;
+  // A stage cut short hands a half-untangled region to the next one, where
+  // ε starts afresh; long stages untangled triceratops and armadillo where
+  // four of 3,000 iterations did not.
+  const std::size_t m_stage_cap = 10000;
+  const Vec3 m_o = {{ 0, 0, 0 }};
+  double m_cone_weight = 0;
+  std::vector<std::vector<int> > m_vertex_tets, m_vertex_faces;
+  std::vector<int> m_region, m_local;
+  std::vector<char> m_movable, m_tet_taken, m_face_taken;
+  Untangle_outcome m_total;
+};
 
 /// Untangles `x` (see the file comment). `reference`: the input positions;
 /// `target`: the tets' target weights. Returns success when every tet and
@@ -376,142 +668,7 @@ inline Untangle_outcome untangle_volume(std::vector<Vec3>& x, const std::vector<
   // (O, a, b, c) on a fixed vertex at the centre: their barrier keeps the
   // border star-shaped. Their reference is the start (the spherical map,
   // positive), their weight a small share.
-  const std::size_t V = x.size(), T = tets.size();
-  double Tsum = 0;
-  for(double a : target) Tsum += a;
-  const double cone_weight = 0.1 * Tsum / double((std::max)(border_faces.size(), std::size_t(1)));
-  std::vector<std::vector<int> > vertex_tets(V), vertex_faces(V);
-  for(std::size_t t = 0; t < T; ++t)
-    for(int v : tets[t]) vertex_tets[std::size_t(v)].push_back(int(t));
-  for(std::size_t f = 0; f < border_faces.size(); ++f)
-    for(int v : border_faces[f]) vertex_faces[std::size_t(v)].push_back(int(f));
-  Untangle_outcome total;
-  // A stage cut short hands a half-untangled region to the next one, where
-  // ε starts afresh; long stages untangled triceratops and armadillo where
-  // four of 3,000 iterations did not.
-  const std::size_t stage_cap = 10000;
-  const Vec3 o = {{ 0, 0, 0 }};
-  std::vector<int> region(V, -1), local(V, -1);
-  std::vector<char> tet_taken(T, 0), face_taken(border_faces.size(), 0);
-  for(int rings : { 1, 3, 6, 12, -1 }) {
-    if(total.iterations >= max_iterations) break;
-    // The folded tets' and cones' vertices, grown by `rings` rings.
-    std::vector<char> movable(V, 0);
-    std::vector<int> front;
-    for(const Tet& k : tets)
-      if(exact_tet_orientation(x[std::size_t(k[0])], x[std::size_t(k[1])], x[std::size_t(k[2])], x[std::size_t(k[3])]) != POSITIVE)
-        for(int v : k) if(!movable[std::size_t(v)]) { movable[std::size_t(v)] = 1; front.push_back(v); }
-    for(const auto& f : border_faces)
-      if(exact_tet_orientation(o, x[std::size_t(f[0])], x[std::size_t(f[1])], x[std::size_t(f[2])]) != POSITIVE)
-        for(int v : f) if(!movable[std::size_t(v)]) { movable[std::size_t(v)] = 1; front.push_back(v); }
-    if(front.empty()) { total.success = true; return total; }
-    if(rings < 0) std::fill(movable.begin(), movable.end(), 1);
-    for(int r = 0; r < rings; ++r) {
-      std::vector<int> next;
-      for(int v : front)
-        for(int t : vertex_tets[std::size_t(v)])
-          for(int w : tets[std::size_t(t)])
-            if(!movable[std::size_t(w)]) { movable[std::size_t(w)] = 1; next.push_back(w); }
-      front.swap(next);
-    }
-    // The connected regions of movable vertices.
-    std::fill(region.begin(), region.end(), -1);
-    std::vector<std::vector<int> > regions;
-    for(std::size_t s = 0; s < V; ++s) {
-      if(!movable[s] || region[s] >= 0) continue;
-      std::vector<int> members(1, int(s));
-      region[s] = int(regions.size());
-      for(std::size_t i = 0; i < members.size(); ++i)
-        for(int t : vertex_tets[std::size_t(members[i])])
-          for(int w : tets[std::size_t(t)])
-            if(movable[std::size_t(w)] && region[std::size_t(w)] < 0) {
-              region[std::size_t(w)] = region[s];
-              members.push_back(w);
-            }
-      regions.push_back(std::move(members));
-    }
-    bool all_certified = true;
-    for(const std::vector<int>& members : regions) {
-      if(total.iterations >= max_iterations) { all_certified = false; break; }
-      // The sub-problem: the tets with a vertex in the region, their
-      // vertices (the others fixed), the border triangles with a vertex in
-      // the region as cones.
-      std::vector<int> global;
-      std::vector<Tet> te;
-      std::vector<double> ge;
-      std::vector<Vec3> xe, refe, cone_ref;
-      std::vector<char> kind;
-      std::vector<int> tet_ids, face_ids;
-      auto index = [&](int v) {
-        if(local[std::size_t(v)] < 0) {
-          local[std::size_t(v)] = int(global.size());
-          global.push_back(v);
-          xe.push_back(x[std::size_t(v)]);
-          refe.push_back(reference[std::size_t(v)]);
-          kind.push_back(movable[std::size_t(v)] ? char(on_border[std::size_t(v)] ? 1 : 0) : char(2));
-        }
-        return local[std::size_t(v)];
-      };
-      for(int v : members)
-        for(int t : vertex_tets[std::size_t(v)])
-          if(!tet_taken[std::size_t(t)]) { tet_taken[std::size_t(t)] = 1; tet_ids.push_back(t); }
-      std::sort(tet_ids.begin(), tet_ids.end()); // the input's order, for the sub-problem's fill-in
-      for(int t : tet_ids) {
-        const Tet& k = tets[std::size_t(t)];
-        te.push_back({{ index(k[0]), index(k[1]), index(k[2]), index(k[3]) }});
-        ge.push_back(target[std::size_t(t)]);
-      }
-      const std::size_t real_tets = te.size();
-      for(int v : members)
-        for(int f : vertex_faces[std::size_t(v)])
-          if(!face_taken[std::size_t(f)]) { face_taken[std::size_t(f)] = 1; face_ids.push_back(f); }
-      std::sort(face_ids.begin(), face_ids.end());
-      std::vector<std::array<int, 3> > faces;
-      for(int fi : face_ids) {
-        const auto& f = border_faces[std::size_t(fi)];
-        faces.push_back({{ index(f[0]), index(f[1]), index(f[2]) }});
-      }
-      for(int t : tet_ids) tet_taken[std::size_t(t)] = 0;
-      for(int f : face_ids) face_taken[std::size_t(f)] = 0;
-      const int centre = int(xe.size());
-      xe.push_back(o);
-      refe.push_back(o);
-      kind.push_back(2);
-      cone_ref = xe;
-      for(const auto& f : faces) {
-        te.push_back({{ centre, f[0], f[1], f[2] }});
-        ge.push_back(cone_weight);
-      }
-      // The callback counts the iterations of every region and stage.
-      const std::size_t offset = total.iterations;
-      std::function<bool(const Volume_iteration&)> counted;
-      if(callback)
-        counted = [&](const Volume_iteration& I) {
-          Volume_iteration J = I;
-          J.iteration += offset;
-          return callback(J);
-        };
-      const Untangle_outcome out = untangle_volume_impl(xe, te, real_tets, kind, faces, refe, cone_ref, ge,
-                                                        (std::min)(stage_cap, max_iterations - total.iterations),
-                                                        counted);
-      total.iterations += out.iterations;
-      total.rounds += out.rounds;
-      ++total.regions;
-      // The region's result, certified or not, is where the next stage
-      // starts (the others did not move); success is checked on the whole.
-      for(std::size_t i = 0; i < global.size(); ++i) {
-        x[std::size_t(global[i])] = xe[i];
-        local[std::size_t(global[i])] = -1;
-      }
-      if(out.stopped) { total.stopped = true; return total; }
-      all_certified = all_certified && out.success;
-    }
-    if(all_certified) {
-      total.success = true;
-      return total;
-    }
-  }
-  return total;
+  return Volume_region_untangling(x, tets, on_border, border_faces, reference, target, callback).run(max_iterations);
 }
 
 } // namespace dlf
