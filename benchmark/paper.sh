@@ -16,6 +16,7 @@
 #                             flows, Figs. 8-9's and 17-18's starts, Figs. 10, 14, 15-16 (benchmark/paper_runs.py)
 #   doc/paper_sphere.md       the paper mode on every closed genus-0 mesh (benchmark/sphere_paper.sh)
 #                             and the literal Algorithm 1 on the sphere (benchmark/paper_runs.py)
+#   doc/sphere_paper_mode.md  the paper mode on the sphere, one option changed at a time (benchmark/paper_runs.py)
 #   doc/images/fig10_*.svg, fig14_*.svg, fig15_16_*.svg (benchmark/fig10.sh, fig14.sh, fig15_16.sh)
 # Each generated part starts with the command, the commit, the processor, the
 # compiler and the versions of CGAL, Eigen, SuiteSparse and OpenBLAS (and
@@ -181,6 +182,8 @@ if part sphere; then
   write_part paper_sphere sphere_paper "The paper's flow on CGAL's closed genus-0 meshes" "$tmp/part.md"
   { header "benchmark/paper_runs.py full sphere_literal"; runs full sphere_literal; } > "$tmp/part.md"
   write_part paper_sphere sphere_literal "The paper's flow on CGAL's closed genus-0 meshes" "$tmp/part.md"
+  { header "benchmark/paper_runs.py full sphere_variants"; runs full sphere_variants; } > "$tmp/part.md"
+  write_part sphere_paper_mode sphere_variants "The paper mode on the sphere" "$tmp/part.md"
 fi
 if part quick; then
   quick_runs > "$tmp/body.md"

@@ -4,7 +4,8 @@
     paper_runs.py DLF MESHES {quick,full} SECTION...
 
 Sections: paper_mode (the stabilised flow on every disk mesh), sphere_literal
-(Algorithm 1 on the sphere), table2 (Table 2, Figs. 12-13: the literal Algorithm 1, fixed steps
+(Algorithm 1 on the sphere), sphere_variants (the stabilised flow on the sphere
+with one option changed at a time), table2 (Table 2, Figs. 12-13: the literal Algorithm 1, fixed steps
 against the adaptive step), mu (Table 2's adaptive column for mu 0.2-0.8),
 modes (Tables 3-5: the certified, paper and literal flows on the peers'
 meshes, same start), sphere_starts (Figs. 8-9: the sphere from the Tutte and
@@ -47,6 +48,7 @@ CFG = {
         "fig14": "nefertiti", "fig15_disk": "nefertiti", "fig15_sphere": "blobby",
         "factors": ["0.25", "0.5", "1", "2", "4", "8", "16"], "fig10_cells": 16, "paper_mode": None,
         "sphere_literal": ["sphere", "ellipsoid", "blobby", "cow", "bear"],
+        "sphere_variants": ["sphere", "blobby", "triceratops", "cow", "bear", "armadillo"],
     },
 }[SIZE]
 
@@ -350,7 +352,32 @@ def sphere_literal():
     return out
 
 
-RUN = {"sphere_literal": sphere_literal, "paper_mode": paper_mode, "table2": table2, "mu": mu, "modes": modes, "sphere_starts": lambda: starts("sphere"),
+def sphere_variants():
+    """The paper mode on the sphere with one stabiliser changed at a time."""
+    meshes = CFG.get("sphere_variants", CFG["sphere"])
+    variants = [("default (μ 0.8, targets lumped on flowing faces)", []), ("`--mu 0.5`", ["--mu", "0.5"]),
+                ("`--literal-targets`", ["--literal-targets"]), ("`--no-flips`", ["--no-flips"]),
+                ("`--log-area-tolerance 0`", ["--log-area-tolerance", "0"])]
+    out = ["### The paper mode on the sphere, one option changed at a time", "",
+           "`dlf sphere MESH --mode paper OPTION`. Each cell: D_area of the flowing triangulation returned / "
+           "iterations / caller folds (the input triangles inverted or degenerate, exact); the stop reason when "
+           "it is not a plateau.", "",
+           "| variant | " + " | ".join(meshes) + " |", "|---|" + "---|" * len(meshes)]
+    for label, extra in variants:
+        cells = []
+        for m in meshes:
+            r = dlf("sphere", off(m), "--mode", "paper", *extra)
+            if r is None:
+                cells.append("error")
+                continue
+            stop = "" if r["stop_reason"] == "plateau" else f" ({r['stop_reason']})"
+            cells.append(f"{g(r['domain_d_area'])} / {r['iterations']} / {folds(r)}{stop}")
+        out.append(f"| {label} | " + " | ".join(cells) + " |")
+    out.append("")
+    return out
+
+
+RUN = {"sphere_literal": sphere_literal, "sphere_variants": sphere_variants, "paper_mode": paper_mode, "table2": table2, "mu": mu, "modes": modes, "sphere_starts": lambda: starts("sphere"),
        "disk_starts": lambda: starts("disk"), "fig10": fig10, "fig14": fig14, "fig15_16": fig15_16}
 for s in SECTIONS:
     if s not in RUN:
