@@ -101,15 +101,7 @@ json make_report(const Disk_settings& s, const Indexed_mesh& input, const Seam_c
                  const Command_seconds& io = Command_seconds())
 {
   const SMP::Discrete_lie_flow_report& R = run.report;
-  json j;
-  j["status"] = run_status(run.status, R);
-  j["message"] = R.message;
-  j["input"] = s.input;
-  j["vertices"] = input.xyz.size();
-  j["faces"] = input.faces.size();
-  j["iterations"] = R.iterations;
-  j["stop_reason"] = SMP::discrete_lie_flow_stop_reason_name(R.stop_reason);
-  j["seconds"] = seconds_json(io, R.seconds_initial, R.seconds_flow, run.seconds);
+  json j = run_report_head(run.status, R, s.input, input, io, run.seconds);
   j["initial"] = initial ? metrics_to_json(*initial) : json(nullptr);
   j["final"] = final_metrics ? metrics_to_json(*final_metrics) : json(nullptr);
   j["mode"] = s.mode;

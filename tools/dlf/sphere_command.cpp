@@ -289,15 +289,7 @@ json sphere_report(const Sphere_settings& s, const Indexed_mesh& input, const Sp
   const SMP::Discrete_lie_flow_report& R = o.report;
   const Density_setup& density = o.density;
   const bool ok = o.ok();
-  json j;
-  j["status"] = run_status(o.status, R);
-  j["message"] = R.message;
-  j["input"] = s.input;
-  j["vertices"] = input.xyz.size();
-  j["faces"] = input.faces.size();
-  j["iterations"] = R.iterations;
-  j["stop_reason"] = SMP::discrete_lie_flow_stop_reason_name(R.stop_reason);
-  j["seconds"] = seconds_json(io, R.seconds_initial, R.seconds_flow, o.seconds);
+  json j = run_report_head(o.status, R, s.input, input, io, o.seconds);
   j["options"] = { { "tolerance", s.options.tolerance }, { "log_area_tolerance", s.options.sphere.log_area_tolerance },
                    { "share_tolerance", s.options.certified.share_tolerance },
                    { "max_iterations", s.options.max_iterations },
