@@ -423,6 +423,57 @@ double band_arg(const py::object& band, bool has_regions)
   return b;
 }
 
+// The flows' mesh: V and F with the checks of the tool's reader.
+Indexed_mesh flow_mesh(const py::object& V, const py::object& F)
+{
+  try {
+    return mesh_of(V, F);
+  } catch(const Cli_error& e) {
+    raise(e);
+  }
+}
+
+// density=, regions= and band= of a flow, checked.
+struct Measure_control
+{
+  std::vector<double> density_values;
+  std::vector<dlf_cli::Region_option> regions;
+  double band = 0;
+};
+
+Measure_control measure_control(const py::object& density, const py::object& regions, const py::object& band,
+                                std::size_t faces)
+{
+  Measure_control m;
+  m.density_values = density_of(density);
+  m.regions = regions_of(regions, faces);
+  if(!m.density_values.empty() && !m.regions.empty()) value_error("density and regions exclude each other");
+  m.band = band_arg(band, !m.regions.empty());
+  return m;
+}
+
+// Parses the tool's `args` into `settings` (`parse`), lets `configure`
+// finish them, and runs `compute` without the GIL, the callback's
+// exception raised once it has returned.
+template <class Settings, class Parse, class Configure, class Compute>
+auto run_flow(const std::vector<std::string>& args, Settings& settings, Python_callback& progress, Parse parse,
+              Configure configure, Compute compute) -> decltype(compute())
+{
+  decltype(compute()) outcome;
+  try {
+    if(!parse(args, settings)) value_error("invalid options");
+    configure();
+    progress.install(settings.options);
+    py::gil_scoped_release release;
+    outcome = compute();
+  } catch(const Cli_error& e) {
+    progress.rethrow();
+    raise(e);
+  }
+  progress.rethrow();
+  return outcome;
+}
+
 py::tuple disk(const py::object& V, const py::object& F, const std::string& mode, const py::object& border,
                const std::string& init, const py::object& density, const py::object& regions, const py::object& band,
                const py::object& seam, const py::object& tolerance,
@@ -432,17 +483,8 @@ py::tuple disk(const py::object& V, const py::object& F, const std::string& mode
                const std::string& name)
 {
   word_arg(name, "name"); // first: the messages below quote it
-  const Indexed_mesh input = [&] {
-    try {
-      return mesh_of(V, F);
-    } catch(const Cli_error& e) {
-      raise(e);
-    }
-  }();
-  const std::vector<double> density_values = density_of(density);
-  const std::vector<dlf_cli::Region_option> region_options = regions_of(regions, input.faces.size());
-  if(!density_values.empty() && !region_options.empty()) value_error("density and regions exclude each other");
-  const double band_width = band_arg(band, !region_options.empty());
+  const Indexed_mesh input = flow_mesh(V, F);
+  const Measure_control measure = measure_control(density, regions, band, input.faces.size());
   const std::vector<long> seam_edges = seam.is_none() ? std::vector<long>() : seam_pairs(seam);
   // The caller's own start (as --init-uv): one row per vertex, its border kept.
   std::vector<std::array<double, 2> > start_uv;
@@ -466,24 +508,15 @@ py::tuple disk(const py::object& V, const py::object& F, const std::string& mode
                      delaunay_flips, history);
   dlf_cli::Disk_settings s;
   Python_callback progress(callback);
-  dlf_cli::Disk_outcome outcome;
-  try {
-    if(!dlf_cli::parse_disk_arguments(args, s)) value_error("invalid options");
+  const dlf_cli::Disk_outcome outcome = run_flow(args, s, progress, dlf_cli::parse_disk_arguments, [&] {
     if(!start_uv.empty()) { s.init = "uv"; s.init_uv = start_uv; }
     if(!seam.is_none()) { s.seam = "seam"; s.seam_pairs = seam_edges; }
-    s.regions = region_options;
-    s.band = band_width;
+    s.regions = measure.regions;
+    s.band = measure.band;
     // As with a density file: a density asks for a tighter default tolerance.
-    if((!density_values.empty() || !region_options.empty()) && tolerance.is_none())
+    if((!measure.density_values.empty() || !measure.regions.empty()) && tolerance.is_none())
       s.options.tolerance = dlf_cli::density_tolerance;
-    progress.install(s.options);
-    py::gil_scoped_release release;
-    outcome = dlf_cli::compute_disk(input, s, density_values);
-  } catch(const Cli_error& e) {
-    progress.rethrow();
-    raise(e);
-  }
-  progress.rethrow();
+  }, [&] { return dlf_cli::compute_disk(input, s, measure.density_values); });
   const py::object report = to_python(dlf_cli::disk_report(s, input, outcome));
   if(!outcome.ok) raise(dlf_cli::disk_failure(s, input, outcome), report);
   // With seams, a vertex on a seam has one uv per side: per-corner uv.
@@ -502,13 +535,7 @@ py::tuple sphere(const py::object& V, const py::object& F, const std::string& mo
                  const std::string& name)
 {
   word_arg(name, "name"); // first: the messages below quote it
-  const Indexed_mesh input = [&] {
-    try {
-      return mesh_of(V, F);
-    } catch(const Cli_error& e) {
-      raise(e);
-    }
-  }();
+  const Indexed_mesh input = flow_mesh(V, F);
   // The caller's start: read as a mesh with the input's faces, so that its
   // rows get the same checks as V's.
   const std::vector<Vec3> start_points = [&] {
@@ -519,10 +546,7 @@ py::tuple sphere(const py::object& V, const py::object& F, const std::string& mo
       raise(Cli_error(std::string("init_map: ") + e.what()));
     }
   }();
-  const std::vector<double> density_values = density_of(density);
-  const std::vector<dlf_cli::Region_option> region_options = regions_of(regions, input.faces.size());
-  if(!density_values.empty() && !region_options.empty()) value_error("density and regions exclude each other");
-  const double band_width = band_arg(band, !region_options.empty());
+  const Measure_control measure = measure_control(density, regions, band, input.faces.size());
   std::vector<std::string> args{ word_arg(name, "name") };
   add_flow_arguments(args, mode, tolerance, max_iterations, mu, share_tolerance, fixed_step, threshold, literal_targets,
                      delaunay_flips, history);
@@ -534,21 +558,12 @@ py::tuple sphere(const py::object& V, const py::object& F, const std::string& mo
   }
   dlf_cli::Sphere_settings s;
   Python_callback progress(callback);
-  dlf_cli::Sphere_outcome outcome;
-  try {
-    if(!dlf_cli::parse_sphere_arguments(args, s)) value_error("invalid options");
-    s.density.regions = region_options; // as --roi-ball: the sphere keeps its default tolerance
-    s.density.band = band_width;
-    if(!density_values.empty() && tolerance.is_none()) s.options.tolerance = dlf_cli::density_tolerance;
+  const dlf_cli::Sphere_outcome outcome = run_flow(args, s, progress, dlf_cli::parse_sphere_arguments, [&] {
+    s.density.regions = measure.regions; // as --roi-ball: the sphere keeps its default tolerance
+    s.density.band = measure.band;
+    if(!measure.density_values.empty() && tolerance.is_none()) s.options.tolerance = dlf_cli::density_tolerance;
     if(!start_points.empty()) { s.start = "given"; s.init_map = start_points; }
-    progress.install(s.options);
-    py::gil_scoped_release release;
-    outcome = dlf_cli::compute_sphere(input, s, density_values);
-  } catch(const Cli_error& e) {
-    progress.rethrow();
-    raise(e);
-  }
-  progress.rethrow();
+  }, [&] { return dlf_cli::compute_sphere(input, s, measure.density_values); });
   if(!outcome.ok()) {
     const Cli_error e = dlf_cli::sphere_failure(s, outcome);
     raise(e, outcome.input_error() ? py::none() : to_python(dlf_cli::sphere_report(s, input, outcome)));

@@ -71,11 +71,17 @@ def _shortfall(report: _t.Dict[str, _t.Any]) -> _t.Optional[str]:
     return "; ".join(words) or None
 
 
-def _checked(result: _t.Tuple[_t.Any, _t.Dict[str, _t.Any]], name: str, strict: bool):
+def _checked(result: _t.Tuple[_t.Any, _t.Dict[str, _t.Any]], name: str, strict: bool,
+             message: _t.Optional[str] = None):
+    """``result``, once said how its run fell short (``message``, "" for
+    not at all; None: what ``_shortfall`` finds in its report): a
+    UserWarning at the line that called the public function or, ``strict``,
+    FlowError with the report."""
     report = result[1]
-    what = _shortfall(report)
-    if what:
-        message = f"{name}: {what}"
+    if message is None:
+        what = _shortfall(report)
+        message = f"{name}: {what}" if what else None
+    if message:
         if strict:
             error = FlowError(message)
             error.report = report
@@ -215,14 +221,8 @@ def atlas(V, F, *, border: str = "square", tips: _t.Optional[int] = None, gutter
     """
     uv, report = _core.atlas(V, F, border=border, tips=tips, gutter=gutter, stretch=stretch, density=density,
                              name=name)
-    if not report["converged"]:
-        message = f"{name}: did not converge: {report['message']}"
-        if strict:
-            error = FlowError(message)
-            error.report = report
-            raise error
-        _warnings.warn(message, UserWarning, stacklevel=2)
-    return uv, report
+    message = f"{name}: did not converge: {report['message']}" if not report["converged"] else ""
+    return _checked((uv, report), name, strict, message)
 
 
 def score(V, F, uv, *, density=None) -> _t.Dict[str, _t.Any]:

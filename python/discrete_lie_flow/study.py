@@ -879,10 +879,15 @@ def export_csv(db: sqlite3.Connection, out) -> int:
     return n
 
 
+def _open_read_only(path: str) -> sqlite3.Connection:
+    """The study's database at `path`, read only; an error exit when there is none."""
+    if not os.path.isfile(path):
+        raise SystemExit(f"dlf-study: error: {path}: no such database")
+    return sqlite3.connect(f"file:{path}?mode=ro", uri=True)
+
+
 def export_study(args: argparse.Namespace) -> int:
-    if not os.path.isfile(args.db):
-        raise SystemExit(f"dlf-study: error: {args.db}: no such database")
-    db = sqlite3.connect(f"file:{args.db}?mode=ro", uri=True)
+    db = _open_read_only(args.db)
     try:
         if args.csv == "-":
             export_csv(db, sys.stdout)
@@ -952,9 +957,7 @@ def write_plots(db: sqlite3.Connection, outdir: Path) -> List[str]:
 
 
 def report_study(args: argparse.Namespace) -> int:
-    if not os.path.isfile(args.db):
-        raise SystemExit(f"dlf-study: error: {args.db}: no such database")
-    db = sqlite3.connect(f"file:{args.db}?mode=ro", uri=True)
+    db = _open_read_only(args.db)
     try:
         text = summary_markdown(db)
         if args.output is None:

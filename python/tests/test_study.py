@@ -32,16 +32,21 @@ TIMEOUT = 10  # seconds per run; the real runs here take well under 1 s
 CONFIGS = ("disk-certified", "disk-paper", "sphere", "sphere-paper")
 
 
+def copy_meshes(folder):
+    """nefertiti.off (a disk) and sphere.off (a sphere) of CGAL's data set into `folder`."""
+    for name in ("nefertiti.off", "sphere.off"):
+        src = os.path.join(MESHES, name)
+        if not os.path.exists(src):
+            missing_mesh(src)
+        shutil.copy(src, folder / name)
+
+
 @pytest.fixture(scope="module")
 def corpus(tmp_path_factory):
     root = tmp_path_factory.mktemp("study")
     meshes = root / "corpus"
     meshes.mkdir()
-    for name in ("nefertiti.off", "sphere.off"):
-        src = os.path.join(MESHES, name)
-        if not os.path.exists(src):
-            missing_mesh(src)
-        shutil.copy(src, meshes / name)
+    copy_meshes(meshes)
     shutil.copy(meshes / "nefertiti.off", meshes / "crash.off")   # a disk: the disk runs crash
     shutil.copy(meshes / "sphere.off", meshes / "hang.off")       # a sphere: the sphere runs hang
     (meshes / "garbage.off").write_text("OFF\n3 1 0\n0 0 zero\n")  # unreadable: refused by both commands
@@ -87,6 +92,44 @@ def count_rows(db):
         return 0
     finally:
         con.close()
+
+
+def start_study(command, delay, **popen):
+    """`command` started in the background, each run of the fake tools
+    delayed by `delay` seconds (FAKE_DELAY); its stdout discarded, its
+    stderr kept as text unless `popen` says otherwise."""
+    popen = dict(dict(stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True), **popen)
+    return subprocess.Popen(command, env=dict(os.environ, FAKE_DELAY=delay), **popen)
+
+
+def wait_for_rows(p, db, n, pause=0.1):
+    """Waits until the study `p` has written `n` rows into `db`, or has
+    ended, or 120 s have passed; returns that deadline."""
+    deadline = time.time() + 120
+    while count_rows(db) < n and time.time() < deadline and p.poll() is None:
+        time.sleep(pause)
+    return deadline
+
+
+def interrupt(p):
+    """Ctrl-C to the study `p`, which must exit with 130; returns its stderr."""
+    p.send_signal(signal.SIGINT)
+    _, err = p.communicate(timeout=120)
+    assert p.returncode == 130, err
+    return err
+
+
+def resume(command, db, first, check):
+    """Runs `command` to its end after a study stopped with the rows `first`
+    in `db`: it succeeds, `check` passes on every row, and the first rows
+    are kept as they were. Returns the finished process and the rows."""
+    p = subprocess.run(command, capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0, p.stderr
+    rows = rows_of(db)
+    check(rows)
+    for key, row in first.items():
+        assert rows[key] == row
+    return p, rows
 
 
 EXPECTED_KEYS = {(m, c) for m in ("crash.off", "garbage.off", "hang.off", "nefertiti.off", "sphere.off") for c in CONFIGS}
@@ -154,36 +197,20 @@ def test_study_records_every_run_once(corpus, tmp_path):
 def test_interrupted_study_resumes(corpus, tmp_path):
     meshes, fake = corpus
     db = tmp_path / "study.sqlite"
-    env = dict(os.environ, FAKE_DELAY="0.5")
-    p = subprocess.Popen(study_command(meshes, db, fake), env=env, stdout=subprocess.DEVNULL,
-                         stderr=subprocess.PIPE, text=True)
-    deadline = time.time() + 120
-    while count_rows(db) < 4 and time.time() < deadline and p.poll() is None:
-        time.sleep(0.1)
-    p.send_signal(signal.SIGINT)
-    _, err = p.communicate(timeout=120)
-    assert p.returncode == 130, err
-    assert "interrupted" in err
+    p = start_study(study_command(meshes, db, fake), "0.5")
+    wait_for_rows(p, db, 4)
+    assert "interrupted" in interrupt(p)
     first = rows_of(db)
     assert 4 <= len(first) < len(EXPECTED_KEYS)
-    p = subprocess.run(study_command(meshes, db, fake), capture_output=True, text=True, timeout=300)
-    assert p.returncode == 0, p.stderr
+    p, _ = resume(study_command(meshes, db, fake), db, first, check_rows)
     assert f"{len(first)} already in" in p.stderr
-    rows = rows_of(db)
-    check_rows(rows)
-    for key, row in first.items():  # kept as they were
-        assert rows[key] == row
 
 
 def test_killed_worker_loses_no_run(corpus, tmp_path):
     meshes, fake = corpus
     db = tmp_path / "study.sqlite"
-    env = dict(os.environ, FAKE_DELAY="0.5")
-    p = subprocess.Popen(study_command(meshes, db, fake), env=env, stdout=subprocess.DEVNULL,
-                         stderr=subprocess.PIPE, text=True)
-    deadline = time.time() + 120
-    while count_rows(db) < 3 and time.time() < deadline and p.poll() is None:
-        time.sleep(0.1)
+    p = start_study(study_command(meshes, db, fake), "0.5")
+    deadline = wait_for_rows(p, db, 3)
     # The worker processes are the study's children that run a flow (its dlf).
     victim = None
     while victim is None and time.time() < deadline and p.poll() is None:
@@ -227,12 +254,10 @@ def test_interrupt_leaves_no_run_and_no_scratch(corpus, tmp_path):
     # Ctrl-C during the local cluster's start is ignored, doc/python.md), at
     # five moments drawn once.
     meshes, fake = corpus
-    env = dict(os.environ, FAKE_DELAY="0.5")
     before = scratch_folders()
     for i, delay in enumerate((0.3, 1.9, 0.0, 2.7, 1.2)):
         db = tmp_path / f"study{i}.sqlite"
-        p = subprocess.Popen(study_command(meshes, db, fake), env=env, stdout=subprocess.DEVNULL,
-                             stderr=subprocess.PIPE, text=True, start_new_session=True)
+        p = start_study(study_command(meshes, db, fake), "0.5", start_new_session=True)
         deadline = time.time() + 120
         while not os.path.isdir(str(db) + ".scratch") or not any(Path(str(db) + ".scratch").iterdir()):
             assert time.time() < deadline and p.poll() is None, "no run started"
@@ -255,37 +280,25 @@ def test_killed_study_resumes_with_every_row_once(corpus, tmp_path):
     # was, runs the others once, and removes the dead one's scratch folder.
     meshes, fake = corpus
     db = tmp_path / "study.sqlite"
-    env = dict(os.environ, FAKE_DELAY="0.5")
-    p = subprocess.Popen(study_command(meshes, db, fake), env=env, stdout=subprocess.DEVNULL,
-                         stderr=subprocess.DEVNULL, start_new_session=True)
-    deadline = time.time() + 120
-    while count_rows(db) < 3 and time.time() < deadline and p.poll() is None:
-        time.sleep(0.1)
+    p = start_study(study_command(meshes, db, fake), "0.5", stderr=subprocess.DEVNULL, text=False,
+                    start_new_session=True)
+    wait_for_rows(p, db, 3)
     os.killpg(p.pid, signal.SIGKILL)
     p.wait(timeout=60)
     assert runs_left(meshes) == []
     first = rows_of(db)
     assert 3 <= len(first) < len(EXPECTED_KEYS)
     assert os.path.isdir(str(db) + ".scratch")  # left by the killed driver
-    p = subprocess.run(study_command(meshes, db, fake), capture_output=True, text=True, timeout=300)
-    assert p.returncode == 0, p.stderr
+    p, _ = resume(study_command(meshes, db, fake), db, first, check_rows)
     assert f"{len(first)} already in" in p.stderr
-    rows = rows_of(db)
-    check_rows(rows)
-    for key, row in first.items():
-        assert rows[key] == row
     assert not os.path.exists(str(db) + ".scratch")
 
 
 def test_second_driver_on_one_database_refuses(corpus, tmp_path):
     meshes, fake = corpus
     db = tmp_path / "study.sqlite"
-    env = dict(os.environ, FAKE_DELAY="0.5")
-    first = subprocess.Popen(study_command(meshes, db, fake), env=env, stdout=subprocess.DEVNULL,
-                             stderr=subprocess.PIPE, text=True)
-    deadline = time.time() + 120
-    while count_rows(db) < 1 and time.time() < deadline and first.poll() is None:
-        time.sleep(0.1)
+    first = start_study(study_command(meshes, db, fake), "0.5")
+    wait_for_rows(first, db, 1)
     second = subprocess.run(study_command(meshes, db, fake), capture_output=True, text=True, timeout=120)
     assert second.returncode == 1
     assert f"another dlf-study (pid {first.pid}) is running on {db}" in second.stderr, second.stderr
@@ -395,23 +408,12 @@ def test_runner_configurations(runner_corpus, tmp_path):
     """Interrupted, resumed, run again: every row once, as it was first written."""
     corpus, runner = runner_corpus
     db = tmp_path / "study.sqlite"
-    env = dict(os.environ, FAKE_DELAY="0.3")
-    p = subprocess.Popen(runner_command(corpus, db, runner), env=env, stdout=subprocess.DEVNULL,
-                         stderr=subprocess.PIPE, text=True)
-    deadline = time.time() + 120
-    while count_rows(db) < 3 and time.time() < deadline and p.poll() is None:
-        time.sleep(0.05)
-    p.send_signal(signal.SIGINT)
-    _, err = p.communicate(timeout=120)
-    assert p.returncode == 130, err
+    p = start_study(runner_command(corpus, db, runner), "0.3")
+    wait_for_rows(p, db, 3, pause=0.05)
+    interrupt(p)
     first = rows_of(db)
     assert 3 <= len(first) < len(RUNNER_KEYS)
-    p = subprocess.run(runner_command(corpus, db, runner), capture_output=True, text=True, timeout=300)
-    assert p.returncode == 0, p.stderr
-    rows = rows_of(db)
-    check_runner_rows(rows)
-    for key, row in first.items():
-        assert rows[key] == row
+    _, rows = resume(runner_command(corpus, db, runner), db, first, check_runner_rows)
     again = [a for a in runner_command(corpus, db, runner) if a != "-q"]  # the progress line says what is left
     p = subprocess.run(again, capture_output=True, text=True, timeout=300)
     assert p.returncode == 0 and f"{len(RUNNER_KEYS)} already in" in p.stderr and "0 to run" in p.stderr, p.stderr
@@ -461,11 +463,7 @@ def checked_corpus(tmp_path_factory):
     root = tmp_path_factory.mktemp("checked")
     corpus = root / "corpus"
     corpus.mkdir()
-    for name in ("nefertiti.off", "sphere.off"):
-        src = os.path.join(MESHES, name)
-        if not os.path.exists(src):
-            missing_mesh(src)
-        shutil.copy(src, corpus / name)
+    copy_meshes(corpus)
     for name in ("fold", "stray", "lie", "garble"):
         shutil.copy(corpus / "nefertiti.off", corpus / f"{name}.off")
     fake = root / "fake-dlf"

@@ -134,13 +134,6 @@ std::vector<std::string> positionals(const po::variables_map& vm, const std::str
   return vm.count(name) ? vm[name].as<std::vector<std::string> >() : std::vector<std::string>();
 }
 
-void set_verbosity(const po::variables_map& vm, Verbosity& verbosity)
-{
-  if(vm.count("quiet") && vm.count("verbose")) throw Cli_error("--quiet and --verbose exclude each other");
-  if(vm.count("quiet")) verbosity = Verbosity::QUIET;
-  if(vm.count("verbose")) verbosity = Verbosity::VERBOSE;
-}
-
 const char* disk_examples =
   "Examples:\n"
   "  dlf disk face.off -o face_uv.obj\n"
@@ -381,10 +374,7 @@ void check_disk_arguments(const po::variables_map& vm, const std::vector<po::opt
   if(s.texture_size < 16 || s.texture_size > 16384) throw Cli_error("--texture-size must be in [16, 16384]");
   if(vm.count("texture-size") && !vm["texture-size"].defaulted() && s.texture_obj.empty())
     throw Cli_error("--texture-size applies to --texture only");
-  s.regions = regions_of(ordered);
-  if(!s.density_file.empty() && !s.regions.empty()) throw Cli_error("--density and --roi/--roi-ball exclude each other");
-  if(vm.count("band") && s.regions.empty()) throw Cli_error("--band applies to --roi and --roi-ball only");
-  if(!(s.band >= 0) || !std::isfinite(s.band)) throw Cli_error("--band must be a number >= 0");
+  read_region_arguments(vm, ordered, s);
   if(!(s.options.certified.share_tolerance >= 0) || !std::isfinite(s.options.certified.share_tolerance))
     throw Cli_error("--share-tolerance must be a number >= 0");
   if(s.has_density() && vm["tolerance"].defaulted()) n.tolerance = density_tolerance;
@@ -496,9 +486,19 @@ std::vector<std::string> positional_arguments(const po::variables_map& vm, const
   return positionals(vm, name);
 }
 
-std::vector<Region_option> regions_in_order(const std::vector<boost::program_options::option>& ordered)
+void set_verbosity(const po::variables_map& vm, Verbosity& verbosity)
 {
-  return regions_of(ordered);
+  if(vm.count("quiet") && vm.count("verbose")) throw Cli_error("--quiet and --verbose exclude each other");
+  if(vm.count("quiet")) verbosity = Verbosity::QUIET;
+  if(vm.count("verbose")) verbosity = Verbosity::VERBOSE;
+}
+
+void read_region_arguments(const po::variables_map& vm, const std::vector<po::option>& ordered, Disk_settings& s)
+{
+  s.regions = regions_of(ordered);
+  if(!s.density_file.empty() && !s.regions.empty()) throw Cli_error("--density and --roi/--roi-ball exclude each other");
+  if(vm.count("band") && s.regions.empty()) throw Cli_error("--band applies to --roi and --roi-ball only");
+  if(!(s.band >= 0) || !std::isfinite(s.band)) throw Cli_error("--band must be a number >= 0");
 }
 
 } // namespace dlf_cli

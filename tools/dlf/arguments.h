@@ -105,9 +105,15 @@ std::vector<std::string> positional_arguments(const boost::program_options::vari
 /// like options): the arguments with each ball glued into one value.
 std::vector<std::string> glue_region_balls(const std::vector<std::string>& args);
 
+/// `-q` / `-v` into `verbosity`; both given: a usage error.
+void set_verbosity(const boost::program_options::variables_map& vm, Verbosity& verbosity);
+
 /// The regions of `--roi` / `--roi-ball` with the k-th `--factor`, in
-/// command-line order; throws `Cli_error` on a missing or bad factor.
-std::vector<Region_option> regions_in_order(const std::vector<boost::program_options::option>& ordered);
+/// command-line order, into `settings`; throws `Cli_error` on a missing or
+/// bad factor, on regions beside `--density`, on `--band` without regions
+/// or below 0.
+void read_region_arguments(const boost::program_options::variables_map& vm,
+                           const std::vector<boost::program_options::option>& ordered, Disk_settings& settings);
 
 /// The options of `Svg_options`, for `dlf disk` and `dlf sphere`.
 void add_svg_options(boost::program_options::options_description& options, Svg_options& svg);

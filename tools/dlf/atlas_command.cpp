@@ -333,26 +333,23 @@ nlohmann::ordered_json atlas_report_json(const SMP::Discrete_lie_flow_atlas_repo
   return j;
 }
 
-int atlas_command(const std::vector<std::string>& args)
+namespace {
+
+// Runs the atlas on the repaired mesh: one line per chart on stderr; the
+// iterations of a chart large enough to take seconds as the other commands
+// print them (in place on a terminal). Throws `Cli_error` when there is no
+// valid atlas.
+SMP::Discrete_lie_flow_atlas_report run_atlas(const Atlas_args& a, Atlas_mesh& mesh,
+                                              Atlas_mesh::Property_map<Atlas_mesh::Halfedge_index, Atlas_kernel::Point_2> uv)
 {
-  typedef std::chrono::steady_clock Clock;
-  const auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
-  Atlas_args a = parse(args);
-  Repairs rep;
-  std::size_t file_vertices = 0;
-  Clock::time_point t0 = Clock::now();
-  Atlas_mesh mesh = read_and_repair(a.input, rep, file_vertices, a.quiet, a.merge_duplicates);
-  const double seconds_read = since(t0);
-  // One line per chart on stderr; the iterations of a chart large enough to
-  // take seconds as the other commands print them (in place on a terminal).
+  SMP::Discrete_lie_flow_atlas_options options = a.options;
   Progress progress(a.quiet ? Verbosity::QUIET : Verbosity::NORMAL, false, stderr);
   if(!a.quiet) {
-    a.options.progress = [&progress](const std::string& s) { progress.finish(); std::cerr << "dlf: atlas: " << s << "\n"; };
-    a.options.flow.callback = progress.callback();
-    a.options.callback_faces = 20000;
+    options.progress = [&progress](const std::string& s) { progress.finish(); std::cerr << "dlf: atlas: " << s << "\n"; };
+    options.flow.callback = progress.callback();
+    options.callback_faces = 20000;
   }
-  auto uv = mesh.add_property_map<Atlas_mesh::Halfedge_index, Atlas_kernel::Point_2>("h:uv").first;
-  const SMP::Discrete_lie_flow_atlas_report r = SMP::discrete_lie_flow_atlas(mesh, uv, a.options);
+  const SMP::Discrete_lie_flow_atlas_report r = SMP::discrete_lie_flow_atlas(mesh, uv, options);
   progress.finish();
   if(r.code != SMP::OK) {
     const Exit_code code = (r.code == SMP::ERROR_EMPTY_MESH || int(r.code) == int(SMP::ERROR_DEGENERATE_INPUT) ||
@@ -360,126 +357,165 @@ int atlas_command(const std::vector<std::string>& args)
     throw Cli_error(a.input + ": " + SMP::discrete_lie_flow_error_message(r.code) + ": " + r.message, code);
   }
   if(!r.valid()) throw Cli_error(a.input + ": the atlas failed its exact checks (nothing written)", EXIT_FLOW_ERROR);
-  // The OBJ: v in the mesh's vertex order (the file's, then added ones), one
-  // vt per (vertex, uv) in the order the faces first name them.
-  t0 = Clock::now();
+  return r;
+}
+
+// The atlas as OBJ arrays: v in the mesh's vertex order (the file's, then
+// added ones), one vt per (vertex, uv) in the order the faces first name them.
+struct Atlas_obj
+{
   std::vector<Vec3> xyz;
-  xyz.reserve(num_vertices(mesh));
+  std::vector<Vec2> vt;
+  std::vector<Triangle> faces, vt_faces;
+};
+
+Atlas_obj atlas_obj(const Atlas_mesh& mesh, Atlas_mesh::Property_map<Atlas_mesh::Halfedge_index, Atlas_kernel::Point_2> uv)
+{
+  Atlas_obj obj;
+  obj.xyz.reserve(num_vertices(mesh));
   for(auto v : vertices(mesh)) {
     const auto& p = mesh.point(v);
-    xyz.push_back({{ p.x(), p.y(), p.z() }});
+    obj.xyz.push_back({{ p.x(), p.y(), p.z() }});
   }
-  std::vector<Vec2> vt;
-  std::vector<Triangle> obj_faces, vt_faces;
-  obj_faces.reserve(num_faces(mesh));
-  vt_faces.reserve(num_faces(mesh));
-  {
-    // The vt of each vertex in a list of their own (a vertex on a seam has
-    // one per side): head[v], then next[].
-    std::vector<int> head(xyz.size(), -1), next, vertex_of;
-    for(auto f : faces(mesh)) {
-      Triangle t, w;
-      int k = 0;
-      for(auto h : halfedges_around_face(halfedge(f, mesh), mesh)) {
-        const int v = int(target(h, mesh));
-        const Vec2 q{{ uv[h].x(), uv[h].y() }};
-        int i = head[std::size_t(v)];
-        while(i >= 0 && vt[std::size_t(i)] != q) i = next[std::size_t(i)];
-        if(i < 0) {
-          i = int(vt.size());
-          vt.push_back(q);
-          next.push_back(head[std::size_t(v)]);
-          head[std::size_t(v)] = i;
-        }
-        t[std::size_t(k)] = v;
-        w[std::size_t(k)] = i;
-        ++k;
+  obj.faces.reserve(num_faces(mesh));
+  obj.vt_faces.reserve(num_faces(mesh));
+  // The vt of each vertex in a list of their own (a vertex on a seam has
+  // one per side): head[v], then next[].
+  std::vector<int> head(obj.xyz.size(), -1), next;
+  for(auto f : faces(mesh)) {
+    Triangle t, w;
+    int k = 0;
+    for(auto h : halfedges_around_face(halfedge(f, mesh), mesh)) {
+      const int v = int(target(h, mesh));
+      const Vec2 q{{ uv[h].x(), uv[h].y() }};
+      int i = head[std::size_t(v)];
+      while(i >= 0 && obj.vt[std::size_t(i)] != q) i = next[std::size_t(i)];
+      if(i < 0) {
+        i = int(obj.vt.size());
+        obj.vt.push_back(q);
+        next.push_back(head[std::size_t(v)]);
+        head[std::size_t(v)] = i;
       }
-      obj_faces.push_back(t);
-      vt_faces.push_back(w);
+      t[std::size_t(k)] = v;
+      w[std::size_t(k)] = i;
+      ++k;
     }
+    obj.faces.push_back(t);
+    obj.vt_faces.push_back(w);
   }
+  return obj;
+}
+
+// -o, and --texture: the atlas is the unit square already, so the
+// checkerboard's squares are equal in uv area, hence in surface area.
+void write_atlas_meshes(const Atlas_args& a, const Atlas_obj& obj, const std::string& comment)
+{
+  {
+    std::ofstream out(a.output, std::ios::binary);
+    write_uv_obj(out, obj.xyz, obj.vt, obj.faces, obj.vt_faces, comment);
+    if(!(out.flush())) throw Cli_error("atlas: cannot write " + a.output);
+  }
+  if(a.texture.empty()) return;
+  const Texture_paths t = texture_paths(a.texture);
+  std::ofstream out(t.obj, std::ios::binary), mtl(t.mtl), png(t.png, std::ios::binary);
+  write_textured_obj(out, obj.xyz, obj.vt, obj.faces, std::filesystem::path(t.mtl).filename().string(),
+                     comment + " (a checkerboard: squares of equal surface area)", obj.vt_faces);
+  write_checker_mtl(mtl, std::filesystem::path(t.png).filename().string());
+  write_checker_png(png, a.texture_size, 16);
+  if(!out.flush() || !mtl.flush() || !png.flush()) throw Cli_error("atlas: cannot write " + a.texture + " (or its .mtl, .png)");
+}
+
+// --svg: the unit square at 800 px, v up; each triangle's colour: log of
+// its uv area over its share of the surface (white: exact).
+void write_atlas_svg(const Atlas_args& a, const Atlas_mesh& mesh,
+                     Atlas_mesh::Property_map<Atlas_mesh::Halfedge_index, Atlas_kernel::Point_2> uv,
+                     const SMP::Discrete_lie_flow_atlas_report& r)
+{
+  const double side = 800, margin = 30, bar = 110; // bar: the colour bar and its labels
+  double uv_total = 0, area_total = 0;
+  std::vector<std::array<Atlas_kernel::Point_2, 3> > tri;
+  std::vector<double> area3;
+  for(auto f : faces(mesh)) {
+    std::array<Atlas_kernel::Point_2, 3> t;
+    std::array<Atlas_kernel::Point_3, 3> p;
+    std::size_t k = 0;
+    for(auto h : halfedges_around_face(halfedge(f, mesh), mesh)) { t[k] = uv[h]; p[k] = mesh.point(target(h, mesh)); ++k; }
+    tri.push_back(t);
+    area3.push_back(std::sqrt(CGAL::squared_area(p[0], p[1], p[2])));
+    uv_total += CGAL::area(t[0], t[1], t[2]);
+    area_total += area3.back();
+  }
+  char d_area_text[32];
+  std::snprintf(d_area_text, sizeof d_area_text, "%.4f", r.metrics.d_area);
+  std::ostringstream svg;
+  write_svg_header(svg, side + 2 * margin + bar, side + 2 * margin,
+                   "dlf atlas " + a.input + ": " + std::to_string(r.charts) + " charts, D_area " + d_area_text +
+                   ", uv area over share");
+  svg << "<rect x=\"" << margin << "\" y=\"" << margin << "\" width=\"" << side << "\" height=\"" << side
+      << "\" fill=\"none\" stroke=\"#888\"/>\n";
+  for(std::size_t f = 0; f < tri.size(); ++f) {
+    const double ratio = (CGAL::area(tri[f][0], tri[f][1], tri[f][2]) / uv_total) / (area3[f] / area_total);
+    svg << "<polygon points=\"";
+    for(int k = 0; k < 3; ++k)
+      svg << (k ? " " : "") << margin + side * tri[f][std::size_t(k)].x() << ',' << margin + side * (1 - tri[f][std::size_t(k)].y());
+    svg << "\" fill=\"" << colour_of_log_ratio(std::log(ratio)) << "\"/>\n";
+  }
+  write_colour_bar(svg, side + 2 * margin, margin, side, false, false);
+  svg << "</svg>\n";
+  std::ofstream out(a.svg);
+  if(!(out << svg.str())) throw Cli_error("atlas: cannot write " + a.svg);
+}
+
+// --report and --csv: the input, its repairs, the library's report, the
+// command's own seconds.
+void write_atlas_report(const Atlas_args& a, std::size_t file_vertices, std::size_t faces, const Repairs& rep,
+                        const SMP::Discrete_lie_flow_atlas_report& r, double seconds_read, double seconds_write)
+{
+  nlohmann::json j;
+  j["input"] = a.input;
+  j["vertices_in_file"] = file_vertices;
+  j["faces"] = faces;
+  j["repairs"] = { { "polygons_triangulated", rep.polygons_triangulated },
+                   { "nonmanifold_vertices_added", rep.nonmanifold_vertices_added },
+                   { "degenerate_faces_dropped", rep.degenerate_faces_dropped },
+                   { "isolated_vertices", rep.isolated_vertices },
+                   { "duplicate_vertices_merged", rep.duplicate_vertices_merged } };
+  const nlohmann::ordered_json atlas = atlas_report_json(r);
+  for(const auto& item : atlas.items()) j[item.key()] = item.value();
+  j["seconds_read"] = seconds_read;
+  j["seconds_write"] = seconds_write;
+  if(!a.report.empty()) {
+    std::ofstream out(a.report);
+    if(!(out << j.dump(2) << "\n")) throw Cli_error("atlas: cannot write " + a.report);
+  }
+  if(!a.csv.empty()) {
+    std::ofstream out(a.csv);
+    write_csv_report(out, nlohmann::ordered_json::parse(j.dump()));
+    if(!out) throw Cli_error("atlas: cannot write " + a.csv);
+  }
+}
+
+} // namespace
+
+int atlas_command(const std::vector<std::string>& args)
+{
+  const Atlas_args a = parse(args);
+  Repairs rep;
+  std::size_t file_vertices = 0;
+  auto t0 = std::chrono::steady_clock::now();
+  Atlas_mesh mesh = read_and_repair(a.input, rep, file_vertices, a.quiet, a.merge_duplicates);
+  const double seconds_read = seconds_since(t0);
+  auto uv = mesh.add_property_map<Atlas_mesh::Halfedge_index, Atlas_kernel::Point_2>("h:uv").first;
+  const SMP::Discrete_lie_flow_atlas_report r = run_atlas(a, mesh, uv);
+  t0 = std::chrono::steady_clock::now();
   std::ostringstream comment;
   comment << "dlf atlas " << a.input << ": " << r.charts << " charts, packing efficiency " << r.packing_efficiency
           << ", D_area " << r.metrics.d_area;
-  {
-    std::ofstream out(a.output, std::ios::binary);
-    write_uv_obj(out, xyz, vt, obj_faces, vt_faces, comment.str());
-    if(!(out.flush())) throw Cli_error("atlas: cannot write " + a.output);
-  }
-  if(!a.texture.empty()) {
-    // The atlas is the unit square already: the checkerboard's squares are
-    // equal in uv area, hence in surface area.
-    const Texture_paths t = texture_paths(a.texture);
-    std::ofstream obj(t.obj, std::ios::binary), mtl(t.mtl), png(t.png, std::ios::binary);
-    write_textured_obj(obj, xyz, vt, obj_faces, std::filesystem::path(t.mtl).filename().string(),
-                       comment.str() + " (a checkerboard: squares of equal surface area)", vt_faces);
-    write_checker_mtl(mtl, std::filesystem::path(t.png).filename().string());
-    write_checker_png(png, a.texture_size, 16);
-    if(!obj.flush() || !mtl.flush() || !png.flush()) throw Cli_error("atlas: cannot write " + a.texture + " (or its .mtl, .png)");
-  }
-  const double seconds_write = since(t0);
-  if(!a.svg.empty()) {
-    // The unit square at 800 px, v up; each triangle's colour: log of its uv
-    // area over its share of the surface (white: exact).
-    const double side = 800, margin = 30, bar = 110; // bar: the colour bar and its labels
-    double uv_total = 0, area_total = 0;
-    std::vector<std::array<Atlas_kernel::Point_2, 3> > tri;
-    std::vector<double> area3;
-    for(auto f : faces(mesh)) {
-      std::array<Atlas_kernel::Point_2, 3> t;
-      std::array<Atlas_kernel::Point_3, 3> p;
-      std::size_t k = 0;
-      for(auto h : halfedges_around_face(halfedge(f, mesh), mesh)) { t[k] = uv[h]; p[k] = mesh.point(target(h, mesh)); ++k; }
-      tri.push_back(t);
-      area3.push_back(std::sqrt(CGAL::squared_area(p[0], p[1], p[2])));
-      uv_total += CGAL::area(t[0], t[1], t[2]);
-      area_total += area3.back();
-    }
-    char d_area_text[32];
-    std::snprintf(d_area_text, sizeof d_area_text, "%.4f", r.metrics.d_area);
-    std::ostringstream svg;
-    write_svg_header(svg, side + 2 * margin + bar, side + 2 * margin,
-                     "dlf atlas " + a.input + ": " + std::to_string(r.charts) + " charts, D_area " + d_area_text +
-                     ", uv area over share");
-    svg << "<rect x=\"" << margin << "\" y=\"" << margin << "\" width=\"" << side << "\" height=\"" << side
-        << "\" fill=\"none\" stroke=\"#888\"/>\n";
-    for(std::size_t f = 0; f < tri.size(); ++f) {
-      const double ratio = (CGAL::area(tri[f][0], tri[f][1], tri[f][2]) / uv_total) / (area3[f] / area_total);
-      svg << "<polygon points=\"";
-      for(int k = 0; k < 3; ++k)
-        svg << (k ? " " : "") << margin + side * tri[f][std::size_t(k)].x() << ',' << margin + side * (1 - tri[f][std::size_t(k)].y());
-      svg << "\" fill=\"" << colour_of_log_ratio(std::log(ratio)) << "\"/>\n";
-    }
-    write_colour_bar(svg, side + 2 * margin, margin, side, false, false);
-    svg << "</svg>\n";
-    std::ofstream out(a.svg);
-    if(!(out << svg.str())) throw Cli_error("atlas: cannot write " + a.svg);
-  }
-  if(!a.report.empty() || !a.csv.empty()) {
-    nlohmann::json j;
-    j["input"] = a.input;
-    j["vertices_in_file"] = file_vertices;
-    j["faces"] = num_faces(mesh);
-    j["repairs"] = { { "polygons_triangulated", rep.polygons_triangulated },
-                     { "nonmanifold_vertices_added", rep.nonmanifold_vertices_added },
-                     { "degenerate_faces_dropped", rep.degenerate_faces_dropped },
-                     { "isolated_vertices", rep.isolated_vertices },
-                     { "duplicate_vertices_merged", rep.duplicate_vertices_merged } };
-    const nlohmann::ordered_json atlas = atlas_report_json(r);
-    for(const auto& item : atlas.items()) j[item.key()] = item.value();
-    j["seconds_read"] = seconds_read;
-    j["seconds_write"] = seconds_write;
-    if(!a.report.empty()) {
-      std::ofstream out(a.report);
-      if(!(out << j.dump(2) << "\n")) throw Cli_error("atlas: cannot write " + a.report);
-    }
-    if(!a.csv.empty()) {
-      std::ofstream out(a.csv);
-      write_csv_report(out, nlohmann::ordered_json::parse(j.dump()));
-      if(!out) throw Cli_error("atlas: cannot write " + a.csv);
-    }
-  }
+  write_atlas_meshes(a, atlas_obj(mesh, uv), comment.str());
+  const double seconds_write = seconds_since(t0);
+  if(!a.svg.empty()) write_atlas_svg(a, mesh, uv, r);
+  if(!a.report.empty() || !a.csv.empty())
+    write_atlas_report(a, file_vertices, num_faces(mesh), rep, r, seconds_read, seconds_write);
   if(!a.quiet)
     std::cerr << "dlf: atlas: " << r.charts << " charts, seam " << r.seam_length << ", packing efficiency "
               << r.packing_efficiency << ", D_area " << r.metrics.d_area << ", " << r.inverted_faces + r.degenerate_faces

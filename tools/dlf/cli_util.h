@@ -6,10 +6,14 @@
 #ifndef DLF_CLI_UTIL_H
 #define DLF_CLI_UTIL_H
 
+#include "cli_error.h"
+
 #include <cstddef>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <numeric>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -17,6 +21,27 @@ namespace dlf_cli {
 
 /// A path as messages quote it.
 inline std::string quoted(const std::string& path) { return "'" + path + "'"; }
+
+/// The indices of one line of a selection file (`path`, line `line_number`):
+/// whole numbers >= 0; another word throws `Cli_error` ("'x' is not
+/// `expected`"). `refuse_overflow`: a number too large for a long (which
+/// strtol reads as its largest value) is refused too, for the callers that
+/// check no range after.
+inline std::vector<long> selection_indices(const std::string& line, const std::string& path, int line_number,
+                                           const std::string& expected, bool refuse_overflow)
+{
+  std::istringstream words(line);
+  std::vector<long> out;
+  std::string token;
+  while(words >> token) {
+    char* end = nullptr;
+    const long i = std::strtol(token.c_str(), &end, 10);
+    if(end != token.c_str() + token.size() || i < 0 || (refuse_overflow && i == std::numeric_limits<long>::max()))
+      throw Cli_error(quoted(path) + ": line " + std::to_string(line_number) + ": '" + token + "' is not " + expected);
+    out.push_back(i);
+  }
+  return out;
+}
 
 /// The shortest decimal text that reads back as `x` (0.005, where a
 /// 17-digit default prints 0.0050000000000000001): for `--help`'s defaults.

@@ -68,17 +68,8 @@ std::vector<long> read_indices(std::istream& in, const std::string& path, int li
 {
   std::string line;
   std::getline(in, line);
-  std::istringstream words(line);
-  std::vector<long> out;
-  std::string token;
-  while(words >> token) {
-    char* end = nullptr;
-    const long i = std::strtol(token.c_str(), &end, 10);
-    if(end != token.c_str() + token.size() || i < 0)
-      throw Cli_error(quoted(path) + ": line " + std::to_string(line_number) + ": '" + token + "' is not an index");
-    out.push_back(i);
-  }
-  return out;
+  // An index too large for a long is refused by the range checks of read_selection().
+  return selection_indices(line, path, line_number, "an index", false);
 }
 
 std::vector<int> ball_faces(const Surface_mesh& sm, const std::array<double, 4>& ball)

@@ -95,26 +95,13 @@ json seam_json(const Disk_settings& s, const Seam_cut& cut)
   return j;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point t0)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 json make_report(const Disk_settings& s, const Indexed_mesh& input, const Seam_cut& cut,
                  const std::vector<Border_loop>& loops, const Disk_run& run,
                  const Metrics* initial, const Metrics* final_metrics, const Density_setup& density,
                  const Command_seconds& io = Command_seconds())
 {
   const SMP::Discrete_lie_flow_report& R = run.report;
-  json j;
-  j["status"] = run_status(run.status, R);
-  j["message"] = R.message;
-  j["input"] = s.input;
-  j["vertices"] = input.xyz.size();
-  j["faces"] = input.faces.size();
-  j["iterations"] = R.iterations;
-  j["stop_reason"] = SMP::discrete_lie_flow_stop_reason_name(R.stop_reason);
-  j["seconds"] = seconds_json(io, R.seconds_initial, R.seconds_flow, run.seconds);
+  json j = run_report_head(run.status, R, s.input, input, io, run.seconds);
   j["initial"] = initial ? metrics_to_json(*initial) : json(nullptr);
   j["final"] = final_metrics ? metrics_to_json(*final_metrics) : json(nullptr);
   j["mode"] = s.mode;
@@ -296,17 +283,9 @@ int disk_command(const std::vector<std::string>& args)
   auto t0 = std::chrono::steady_clock::now();
   const Indexed_mesh input = read_triangle_mesh(s.input);
   io.read = seconds_since(t0);
-  Progress progress(s.verbosity, s.mode != "certified");
-  s.options.callback = progress.callback();
-  Disk_outcome outcome;
   t0 = std::chrono::steady_clock::now();
-  try {
-    outcome = compute_disk(input, s);
-  } catch(...) {
-    progress.finish();
-    throw;
-  }
-  progress.finish();
+  Disk_outcome outcome =
+    run_with_progress(s.verbosity, s.mode != "certified", s.options, [&] { return compute_disk(input, s); });
   io.check = (std::max)(0., seconds_since(t0) - outcome.run.seconds);
   const Seam_cut& cut = outcome.cut;
   const Indexed_mesh& mesh = mapped_mesh(input, s, outcome);
@@ -348,11 +327,8 @@ int disk_command(const std::vector<std::string>& args)
     picture_timings = write_pictures(outputs, s, mesh, run, density, comment.str(), &input);
   }
   for(const auto& p : picture_timings) io.pictures += p.second;
-  if(!s.report.empty() || !s.csv.empty()) {
-    const json report = make_report(s, input, cut, loops, run, initial_ptr, final_ptr, density, io);
-    if(!s.report.empty()) outputs.write(s.report, [&](std::ostream& o) { o << report.dump(2) << '\n'; });
-    if(!s.csv.empty()) outputs.write(s.csv, [&](std::ostream& o) { write_csv_report(o, report); });
-  }
+  if(!s.report.empty() || !s.csv.empty())
+    write_report_files(outputs, s.report, s.csv, make_report(s, input, cut, loops, run, initial_ptr, final_ptr, density, io));
   outputs.commit();
 
   if(s.verbosity != Verbosity::QUIET)

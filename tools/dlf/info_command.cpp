@@ -167,17 +167,103 @@ Polygon_measure measure_polygon(const std::vector<Point_3>& points, const Polygo
   return r;
 }
 
-Mesh_info analyse(const std::vector<Point_3>& points, const std::vector<Polygon>& polygons)
-{
-  Mesh_info m;
-  m.vertices = points.size();
-  m.faces = polygons.size();
-  const std::size_t V = points.size();
+// Directed edges of every polygon, as (min, max, forward, polygon, corner).
+struct Side { std::size_t a, b; bool forward; std::size_t face, corner_a, corner_b; };
 
-  std::vector<bool> used(V, false);
+// Orientability: two faces across a manifold edge that run it the same
+// way must be flipped relative to each other; a cycle with an odd number
+// of flips (a Möbius strip) makes the component non-orientable. A
+// union-find of faces that keeps each face's flip against its parent.
+class Face_orientation
+{
+public:
+  explicit Face_orientation(std::size_t faces) : m_parent(faces), m_flip(faces, 0), m_non_orientable(faces, false)
+  {
+    std::iota(m_parent.begin(), m_parent.end(), std::size_t(0));
+  }
+
+  /// Faces `s` and `t` across a manifold edge; `flip`: they run it the same way.
+  void join(std::size_t s, std::size_t t, char flip)
+  {
+    char fs, ft;
+    const std::size_t rs = root(s, fs), rt = root(t, ft);
+    if(rs != rt) {
+      m_parent[rs] = rt;
+      m_flip[rs] = char(fs ^ ft ^ flip);
+      if(m_non_orientable[rs]) m_non_orientable[rt] = true;
+    } else if((fs ^ ft) != flip) {
+      m_non_orientable[rs] = true;
+    }
+  }
+
+  bool orientable(std::size_t f)
+  {
+    char flip;
+    return !m_non_orientable[root(f, flip)];
+  }
+
+private:
+  std::size_t root(std::size_t f, char& flip) // with path compression, the flips kept
+  {
+    std::size_t r = f;
+    flip = 0;
+    while(m_parent[r] != r) { flip ^= m_flip[r]; r = m_parent[r]; }
+    char to_root = flip;
+    while(m_parent[f] != r && f != r) {
+      const std::size_t up = m_parent[f];
+      const char next = char(to_root ^ m_flip[f]);
+      m_parent[f] = r;
+      m_flip[f] = to_root;
+      f = up;
+      to_root = next;
+    }
+    return r;
+  }
+
+  std::vector<std::size_t> m_parent;
+  std::vector<char> m_flip;
+  std::vector<bool> m_non_orientable; ///< per root
+};
+
+// What the passes of analyse() over vertices, faces and edges hand on.
+struct Mesh_survey
+{
+  Mesh_survey(std::size_t vertices, const std::vector<Polygon>& polygons)
+    : used(vertices, false), corner_start(polygons.size() + 1, 0), face_area(polygons.size(), 0),
+      components(vertices), fans(corners(polygons)), border(vertices), on_border(vertices, false),
+      non_manifold_vertex(vertices, false), orientation(polygons.size())
+  {
+    for(std::size_t f = 0; f < polygons.size(); ++f) corner_start[f + 1] = corner_start[f] + polygons[f].size();
+  }
+  static std::size_t corners(const std::vector<Polygon>& polygons)
+  {
+    std::size_t n = 0;
+    for(const Polygon& p : polygons) n += p.size();
+    return n;
+  }
+
+  std::vector<bool> used;                                  ///< per vertex: a face refers to it
+  std::vector<std::pair<Point_3, std::size_t> > by_position; ///< the used vertices, sorted by position
+  std::vector<Side> sides;                                 ///< sorted by (a, b)
+  std::vector<std::size_t> corner_start;                   ///< face f's corners from corner_start[f]
+  std::vector<double> face_area;
+  Union_find components;                                   ///< vertices joined along the polygons' edges
+  Union_find fans;                                         ///< corners joined across manifold edges
+  // Border edges, for the loops: a graph on vertices, one component per
+  // loop when the border is manifold.
+  Union_find border;
+  std::vector<bool> on_border, non_manifold_vertex;
+  Face_orientation orientation;
+};
+
+// Unreferenced and non-finite vertices, the bounding box, duplicate positions.
+void survey_vertices(const std::vector<Point_3>& points, const std::vector<Polygon>& polygons, Mesh_survey& survey,
+                     Mesh_info& m)
+{
+  const std::size_t V = points.size();
   for(const Polygon& p : polygons)
-    for(std::size_t i : p) used[i] = true;
-  m.unreferenced = std::size_t(std::count(used.begin(), used.end(), false));
+    for(std::size_t i : p) survey.used[i] = true;
+  m.unreferenced = std::size_t(std::count(survey.used.begin(), survey.used.end(), false));
   bool first = true;
   for(std::size_t i = 0; i < V; ++i) {
     const Point_3& p = points[i];
@@ -189,30 +275,29 @@ Mesh_info analyse(const std::vector<Point_3>& points, const std::vector<Polygon>
     }
     first = false;
   }
-  std::vector<std::pair<Point_3, std::size_t> > by_position;
+  std::vector<std::pair<Point_3, std::size_t> >& by_position = survey.by_position;
   for(std::size_t i = 0; i < V; ++i)
-    if(used[i]) by_position.emplace_back(points[i], i);
+    if(survey.used[i]) by_position.emplace_back(points[i], i);
   std::sort(by_position.begin(), by_position.end());
   for(std::size_t k = 1; k < by_position.size(); ++k)
     if(by_position[k].first == by_position[k - 1].first) ++m.duplicate_positions;
+}
 
-  // Directed edges of every polygon, as (min, max, forward, polygon, corner).
-  struct Side { std::size_t a, b; bool forward; std::size_t face, corner_a, corner_b; };
-  std::vector<Side> sides;
-  std::vector<std::size_t> corner_start(polygons.size() + 1, 0);
-  for(std::size_t f = 0; f < polygons.size(); ++f) corner_start[f + 1] = corner_start[f] + polygons[f].size();
-  Union_find components(V), fans(corner_start.back());
-  std::vector<double> face_area(polygons.size(), 0);
+// Triangles, faces repeating a vertex, areas and angles, connected
+// components; the polygons' sides, sorted.
+void survey_faces(const std::vector<Point_3>& points, const std::vector<Polygon>& polygons, Mesh_survey& survey,
+                  Mesh_info& m)
+{
   for(std::size_t f = 0; f < polygons.size(); ++f) {
     const Polygon& p = polygons[f];
-    const std::size_t n = p.size();
+    const std::size_t n = p.size(), first = survey.corner_start[f];
     if(n == 3) ++m.triangles;
     bool repeated = false;
     for(std::size_t k = 0; k < n; ++k) {
       const std::size_t a = p[k], b = p[(k + 1) % n];
-      components.unite(a, b);
+      survey.components.unite(a, b);
       if(a == b) { repeated = true; continue; }
-      sides.push_back({ std::min(a, b), std::max(a, b), a < b, f, corner_start[f] + k, corner_start[f] + (k + 1) % n });
+      survey.sides.push_back({ std::min(a, b), std::max(a, b), a < b, f, first + k, first + (k + 1) % n });
     }
     for(std::size_t j = 0; j < n && !repeated; ++j)
       for(std::size_t k = j + 1; k < n; ++k) repeated = repeated || p[j] == p[k];
@@ -221,126 +306,110 @@ Mesh_info analyse(const std::vector<Point_3>& points, const std::vector<Polygon>
     const Polygon_measure q = measure_polygon(points, p);
     ++m.measured_faces;
     if(q.zero_area) ++m.zero_area_faces;
-    face_area[f] = q.area;
+    survey.face_area[f] = q.area;
     m.area += q.area;
     m.min_angle_degrees = std::min(m.min_angle_degrees, q.min_angle);
     if(q.min_angle < 1) ++m.faces_below_1_degree;
   }
-  for(std::size_t i = 0; i < V; ++i)
-    if(used[i] && components.find(i) == i) ++m.components;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(survey.used[i] && survey.components.find(i) == i) ++m.components;
+  std::sort(survey.sides.begin(), survey.sides.end(),
+            [](const Side& x, const Side& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+}
 
-  std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
-  // Border edges, for the loops: a graph on vertices, one component per loop
-  // when the border is manifold.
-  Union_find border(V);
-  std::vector<bool> on_border(V, false), non_manifold_vertex(V, false);
-  // Orientability: two faces across a manifold edge that run it the same
-  // way must be flipped relative to each other; a cycle with an odd number
-  // of flips (a Möbius strip) makes the component non-orientable.
-  std::vector<std::size_t> face_parent(polygons.size());
-  std::vector<char> flip_to_parent(polygons.size(), 0);
-  std::iota(face_parent.begin(), face_parent.end(), std::size_t(0));
-  auto root = [&](std::size_t f, char& flip) { // with path compression, the flips kept
-    std::size_t r = f;
-    flip = 0;
-    while(face_parent[r] != r) { flip ^= flip_to_parent[r]; r = face_parent[r]; }
-    char to_root = flip;
-    while(face_parent[f] != r && f != r) {
-      const std::size_t up = face_parent[f];
-      const char next = char(to_root ^ flip_to_parent[f]);
-      face_parent[f] = r;
-      flip_to_parent[f] = to_root;
-      f = up;
-      to_root = next;
-    }
-    return r;
-  };
-  std::vector<bool> non_orientable_root(polygons.size(), false);
+// The end of the run of sides from `k` that are one edge.
+std::size_t edge_end(const std::vector<Side>& sides, std::size_t k)
+{
+  std::size_t e = k + 1;
+  while(e < sides.size() && sides[e].a == sides[k].a && sides[e].b == sides[k].b) ++e;
+  return e;
+}
+
+// Edges (border, non-manifold, inconsistently oriented), border loops, the
+// faces' orientation and the fans of corners around each vertex; the
+// duplicate positions on the border, the Euler characteristic.
+void survey_edges(std::size_t V, Mesh_survey& survey, Mesh_info& m)
+{
+  const std::vector<Side>& sides = survey.sides;
   for(std::size_t k = 0; k < sides.size(); ) {
-    std::size_t e = k + 1;
-    while(e < sides.size() && sides[e].a == sides[k].a && sides[e].b == sides[k].b) ++e;
+    const std::size_t e = edge_end(sides, k);
     ++m.edges;
     const std::size_t count = e - k;
     if(count == 1) {
       ++m.border_edges;
-      border.unite(sides[k].a, sides[k].b);
-      on_border[sides[k].a] = on_border[sides[k].b] = true;
+      survey.border.unite(sides[k].a, sides[k].b);
+      survey.on_border[sides[k].a] = survey.on_border[sides[k].b] = true;
     } else if(count > 2) {
       ++m.non_manifold_edges;
-      non_manifold_vertex[sides[k].a] = non_manifold_vertex[sides[k].b] = true;
+      survey.non_manifold_vertex[sides[k].a] = survey.non_manifold_vertex[sides[k].b] = true;
     } else {
-      if(sides[k].forward == sides[k + 1].forward) ++m.misoriented_edges;
-      char fs, ft;
-      const std::size_t rs = root(sides[k].face, fs), rt = root(sides[k + 1].face, ft);
-      const char flip = sides[k].forward == sides[k + 1].forward ? 1 : 0;
-      if(rs != rt) {
-        face_parent[rs] = rt;
-        flip_to_parent[rs] = char(fs ^ ft ^ flip);
-        if(non_orientable_root[rs]) non_orientable_root[rt] = true;
-      } else if((fs ^ ft) != flip) {
-        non_orientable_root[rs] = true;
-      }
-      // The two faces are one fan at either end: join the corners there.
       const Side &s = sides[k], &t = sides[k + 1];
+      if(s.forward == t.forward) ++m.misoriented_edges;
+      survey.orientation.join(s.face, t.face, s.forward == t.forward ? 1 : 0);
+      // The two faces are one fan at either end: join the corners there.
       const std::size_t s_at_a = s.forward ? s.corner_a : s.corner_b, s_at_b = s.forward ? s.corner_b : s.corner_a;
       const std::size_t t_at_a = t.forward ? t.corner_a : t.corner_b, t_at_b = t.forward ? t.corner_b : t.corner_a;
-      fans.unite(s_at_a, t_at_a);
-      fans.unite(s_at_b, t_at_b);
+      survey.fans.unite(s_at_a, t_at_a);
+      survey.fans.unite(s_at_b, t_at_b);
     }
     k = e;
   }
   for(std::size_t i = 0; i < V; ++i)
-    if(on_border[i] && border.find(i) == i) ++m.border_loops;
+    if(survey.on_border[i] && survey.border.find(i) == i) ++m.border_loops;
   // A mesh cut open along seams (as exporters write it) has its seam's
   // vertices twice, both on the border: not a defect.
+  const std::vector<std::pair<Point_3, std::size_t> >& by_position = survey.by_position;
   for(std::size_t k = 1; k < by_position.size(); ++k)
-    if(by_position[k].first == by_position[k - 1].first && on_border[by_position[k].second] &&
-       on_border[by_position[k - 1].second])
+    if(by_position[k].first == by_position[k - 1].first && survey.on_border[by_position[k].second] &&
+       survey.on_border[by_position[k - 1].second])
       ++m.duplicate_positions_on_border;
   m.euler = long(V - m.unreferenced) - long(m.edges) + long(m.faces);
+}
 
-  // A vertex whose corners form more than one fan joins separate sheets.
+// A vertex whose corners form more than one fan joins separate sheets.
+void count_non_manifold_vertices(const std::vector<Polygon>& polygons, Mesh_survey& survey, Mesh_info& m)
+{
+  const std::size_t V = survey.used.size();
   std::vector<std::size_t> first_fan(V, std::size_t(-1));
   std::vector<bool> counted(V, false);
   for(std::size_t f = 0; f < polygons.size(); ++f)
     for(std::size_t k = 0; k < polygons[f].size(); ++k) {
-      const std::size_t v = polygons[f][k], fan = fans.find(corner_start[f] + k);
+      const std::size_t v = polygons[f][k], fan = survey.fans.find(survey.corner_start[f] + k);
       if(first_fan[v] == std::size_t(-1)) first_fan[v] = fan;
       else if(first_fan[v] != fan && !counted[v]) { counted[v] = true; ++m.non_manifold_vertices; }
     }
   for(std::size_t v = 0; v < V; ++v)
-    if(counted[v]) non_manifold_vertex[v] = true;
+    if(counted[v]) survey.non_manifold_vertex[v] = true;
+}
 
-  // Per component (by the union-find of its vertices): counts, border
-  // loops, manifold and orientable.
+// Per component (by the union-find of its vertices): counts, border
+// loops, manifold and orientable; largest first, then by smallest vertex.
+void list_components(const std::vector<Polygon>& polygons, Mesh_survey& survey, Mesh_info& m)
+{
+  const std::size_t V = survey.used.size();
   std::vector<std::size_t> part_of(V, std::size_t(-1));
   for(std::size_t i = 0; i < V; ++i)
-    if(used[i] && components.find(i) == i) { part_of[i] = m.parts.size(); m.parts.emplace_back(); }
+    if(survey.used[i] && survey.components.find(i) == i) { part_of[i] = m.parts.size(); m.parts.emplace_back(); }
+  auto part = [&](std::size_t v) -> Component_info& { return m.parts[part_of[survey.components.find(v)]]; };
   std::vector<std::size_t> smallest_vertex(m.parts.size(), V);
   for(std::size_t i = 0; i < V; ++i) {
-    if(!used[i]) continue;
-    const std::size_t c = part_of[components.find(i)];
-    Component_info& part = m.parts[c];
-    ++part.vertices;
+    if(!survey.used[i]) continue;
+    const std::size_t c = part_of[survey.components.find(i)];
+    Component_info& component = m.parts[c];
+    ++component.vertices;
     smallest_vertex[c] = std::min(smallest_vertex[c], i);
-    if(non_manifold_vertex[i]) part.manifold = false;
-    if(on_border[i] && border.find(i) == i) ++part.border_loops;
+    if(survey.non_manifold_vertex[i]) component.manifold = false;
+    if(survey.on_border[i] && survey.border.find(i) == i) ++component.border_loops;
   }
-  for(std::size_t k = 0; k < sides.size(); ) {
-    std::size_t e = k + 1;
-    while(e < sides.size() && sides[e].a == sides[k].a && sides[e].b == sides[k].b) ++e;
-    ++m.parts[part_of[components.find(sides[k].a)]].edges;
-    k = e;
-  }
+  for(std::size_t k = 0; k < survey.sides.size(); k = edge_end(survey.sides, k)) ++part(survey.sides[k].a).edges;
   for(std::size_t f = 0; f < polygons.size(); ++f) {
     if(polygons[f].empty()) continue;
-    Component_info& part = m.parts[part_of[components.find(polygons[f][0])]];
-    ++part.faces;
-    part.area += face_area[f];
-    char flip;
-    if(non_orientable_root[root(f, flip)]) part.orientable = false;
+    Component_info& component = part(polygons[f][0]);
+    ++component.faces;
+    component.area += survey.face_area[f];
+    if(!survey.orientation.orientable(f)) component.orientable = false;
   }
-  // Largest first, then by smallest vertex: a stable order for text and JSON.
+  // A stable order for text and JSON.
   std::vector<std::size_t> order(m.parts.size());
   std::iota(order.begin(), order.end(), std::size_t(0));
   std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
@@ -349,6 +418,19 @@ Mesh_info analyse(const std::vector<Point_3>& points, const std::vector<Polygon>
   std::vector<Component_info> sorted;
   for(std::size_t c : order) sorted.push_back(m.parts[c]);
   m.parts.swap(sorted);
+}
+
+Mesh_info analyse(const std::vector<Point_3>& points, const std::vector<Polygon>& polygons)
+{
+  Mesh_info m;
+  m.vertices = points.size();
+  m.faces = polygons.size();
+  Mesh_survey survey(points.size(), polygons);
+  survey_vertices(points, polygons, survey, m);
+  survey_faces(points, polygons, survey, m);
+  survey_edges(points.size(), survey, m);
+  count_non_manifold_vertices(polygons, survey, m);
+  list_components(polygons, survey, m);
   return m;
 }
 
@@ -505,6 +587,30 @@ void print_info(std::ostream& out, const std::string& path, const Mesh_info& m, 
   const bool atlas = atlas_fits(m, note);
   out << "  dlf atlas             " << (atlas ? "fits (" + note + ")" : "does not fit: " + note) << "\n";
 }
+// What the command says of a mesh: the analysis, the command that fits (or
+// why none does) and, for a mesh the flows take, its border loops.
+struct Mesh_description
+{
+  Mesh_info info;
+  std::string fits, reason;
+  std::vector<Border_loop> loops;
+};
+
+Mesh_description describe(const std::vector<Point_3>& points, const std::vector<Polygon>& polygons)
+{
+  Mesh_description d;
+  d.info = analyse(points, polygons);
+  d.fits = verdict(d.info, d.reason);
+  if(d.info.usable()) {
+    std::vector<Vec3> xyz;
+    for(const Point_3& p : points) xyz.push_back({ { p.x(), p.y(), p.z() } });
+    std::vector<Triangle> triangles;
+    for(const Polygon& p : polygons) triangles.push_back({ { int(p[0]), int(p[1]), int(p[2]) } });
+    d.loops = border_loops(xyz, triangles);
+  }
+  return d;
+}
+
 } // namespace
 
 nlohmann::ordered_json mesh_info(const std::string& name, const std::vector<Vec3>& xyz,
@@ -512,16 +618,8 @@ nlohmann::ordered_json mesh_info(const std::string& name, const std::vector<Vec3
 {
   std::vector<Point_3> points;
   for(const Vec3& p : xyz) points.emplace_back(p[0], p[1], p[2]);
-  const Mesh_info m = analyse(points, polygons);
-  std::string reason;
-  const std::string fits = verdict(m, reason);
-  std::vector<Border_loop> loops;
-  if(m.usable()) {
-    std::vector<Triangle> triangles;
-    for(const Polygon& p : polygons) triangles.push_back({ { int(p[0]), int(p[1]), int(p[2]) } });
-    loops = border_loops(xyz, triangles);
-  }
-  return info_json(name, m, loops, fits, reason);
+  const Mesh_description d = describe(points, polygons);
+  return info_json(name, d.info, d.loops, d.fits, d.reason);
 }
 
 int info_command(const std::vector<std::string>& args)
@@ -555,24 +653,11 @@ int info_command(const std::vector<std::string>& args)
                         std::to_string(points.size()));
   if(polygons.empty()) throw Cli_error("'" + path + "': the mesh has no faces");
 
-  const Mesh_info m = analyse(points, polygons);
-  std::string reason;
-  const std::string fits = verdict(m, reason);
-  std::vector<Border_loop> loops;
-  if(m.usable()) {
-    std::vector<Vec3> xyz;
-    for(const Point_3& p : points) xyz.push_back({ { p.x(), p.y(), p.z() } });
-    std::vector<Triangle> triangles;
-    for(const Polygon& p : polygons) triangles.push_back({ { int(p[0]), int(p[1]), int(p[2]) } });
-    loops = border_loops(xyz, triangles);
-  }
-  if(!report.empty()) {
-    const json j = info_json(path, m, loops, fits, reason);
-    outputs.write(report, [&](std::ostream& o) { o << j.dump(2) << '\n'; });
-  }
+  const Mesh_description d = describe(points, polygons);
+  if(!report.empty()) write_report_files(outputs, report, "", info_json(path, d.info, d.loops, d.fits, d.reason));
   outputs.commit();
   if(vm.count("quiet") == 0) {
-    print_info(std::cout, path, m, loops, fits, reason);
+    print_info(std::cout, path, d.info, d.loops, d.fits, d.reason);
     for(const std::string& w : outputs.committed()) std::cout << "  wrote " << w << "\n";
   }
   return EXIT_OK;

@@ -135,4 +135,11 @@ void write_csv_report(std::ostream& out, const nlohmann::ordered_json& report)
   out << "\n";
 }
 
+void write_report_files(Output_files& outputs, const std::string& json_path, const std::string& csv_path,
+                        const nlohmann::ordered_json& report)
+{
+  if(!json_path.empty()) outputs.write(json_path, [&](std::ostream& o) { o << report.dump(2) << '\n'; });
+  if(!csv_path.empty()) outputs.write(csv_path, [&](std::ostream& o) { write_csv_report(o, report); });
+}
+
 } // namespace dlf_cli

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <functional>
 #include <ostream>
 #include <string>
@@ -69,6 +70,12 @@ struct Command_seconds
 /// + write + pictures. A command appends its own split after these.
 nlohmann::ordered_json seconds_json(const Command_seconds& command, double initial, double flow, double total);
 
+/// Seconds of wall time since `start`.
+inline double seconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 /// Writes `report` as CSV: a header line and one row. Nested objects are
 /// flattened into dotted column names (`final.d_area`, `seconds.flow`),
 /// lists by index (`regions.0.achieved_fraction`), except the per-iteration
@@ -77,6 +84,11 @@ nlohmann::ordered_json seconds_json(const Command_seconds& command, double initi
 /// comma, a quote or a line break (RFC 4180); numbers are written as the
 /// JSON writes them (shortest round trip).
 void write_csv_report(std::ostream& out, const nlohmann::ordered_json& report);
+
+/// Writes `report` to the declared outputs `json_path` (indented by 2) and
+/// `csv_path` (`write_csv_report()`); an empty path is not written.
+void write_report_files(Output_files& outputs, const std::string& json_path, const std::string& csv_path,
+                        const nlohmann::ordered_json& report);
 
 } // namespace dlf_cli
 

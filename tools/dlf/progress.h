@@ -41,6 +41,29 @@ private:
   std::FILE* m_out;
 };
 
+/// Runs `flow()` (a command's run on its read input) with a progress line
+/// per iteration through `options.callback`, ended whether `flow` returns
+/// or throws; the callback is put back as it was, so that the options
+/// never keep one that refers to the ended progress.
+template <class Flow>
+auto run_with_progress(Verbosity verbosity, bool show_flips,
+                       CGAL::Surface_mesh_parameterization::Discrete_lie_flow_options& options, Flow flow) -> decltype(flow())
+{
+  Progress progress(verbosity, show_flips);
+  const auto callback = options.callback;
+  options.callback = progress.callback();
+  try {
+    auto outcome = flow();
+    progress.finish();
+    options.callback = callback;
+    return outcome;
+  } catch(...) {
+    progress.finish();
+    options.callback = callback;
+    throw;
+  }
+}
+
 } // namespace dlf_cli
 
 #endif

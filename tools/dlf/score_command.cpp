@@ -51,8 +51,7 @@ int score_command(const std::vector<std::string>& args)
                           { "mirrored_charts", atlas.mirrored_charts },
                           { "overlapping_face_pairs", atlas.overlapping_face_pairs },
                           { "overlapping_pairs_in_a_chart", atlas.overlapping_pairs_in_a_chart } };
-    if(!s.report.empty()) outputs.write(s.report, [&](std::ostream& o) { o << report.dump(2) << '\n'; });
-    if(!s.csv.empty()) outputs.write(s.csv, [&](std::ostream& o) { write_csv_report(o, report); });
+    write_report_files(outputs, s.report, s.csv, report);
   }
   outputs.commit();
   if(s.verbosity != Verbosity::QUIET) {

@@ -51,18 +51,7 @@ private:
 // The indices of one line of a selection file.
 std::vector<long> line_indices(const std::string& line, const std::string& path, int line_number)
 {
-  std::istringstream words(line);
-  std::vector<long> out;
-  std::string token;
-  while(words >> token) {
-    char* end = nullptr;
-    const long i = std::strtol(token.c_str(), &end, 10);
-    if(end != token.c_str() + token.size() || i < 0 || i == std::numeric_limits<long>::max())
-      throw Cli_error(quoted(path) + ": line " + std::to_string(line_number) + ": '" + token +
-                      "' is not a vertex index (a whole number >= 0)");
-    out.push_back(i);
-  }
-  return out;
+  return selection_indices(line, path, line_number, "a vertex index (a whole number >= 0)", true);
 }
 
 std::string pair_name(long a, long b) { return "(" + std::to_string(a) + " " + std::to_string(b) + ")"; }

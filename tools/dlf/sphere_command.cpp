@@ -67,11 +67,9 @@ const char* sphere_help =
   "Progress: one line per iteration (iteration, step, residual, d_area, elapsed), rewritten in\n"
   "place when stdout is a terminal, plain lines otherwise; -q silences it, -v adds details.\n";
 
-} // namespace
-
-bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_settings& s)
+// The options of `dlf sphere`, bound to the settings they fill.
+void add_sphere_options(po::options_description& visible, Sphere_settings& s)
 {
-  po::options_description visible("Options");
   visible.add_options()
     ("help,h", "this help")
     ("output,o", po::value<std::string>(&s.output)->value_name("OUT.obj"), "OBJ with the sphere points")
@@ -136,31 +134,11 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
      "width (3D length) of a transition from each region's factor to 1 around it")
     ("quiet,q", "print nothing on success (no progress, no summary)")
     ("verbose,v", "progress with the step's details, never overwritten");
-  po::options_description all;
-  all.add(visible);
-  all.add_options()("input", po::value<std::vector<std::string> >());
-  po::positional_options_description positional;
-  positional.add("input", -1);
-  po::variables_map vm;
-  std::vector<po::option> ordered;
-  try {
-    const int style = po::command_line_style::default_style & ~po::command_line_style::allow_guessing;
-    const po::parsed_options parsed =
-      po::command_line_parser(glue_region_balls(args)).options(all).positional(positional).style(style).run();
-    ordered = parsed.options;
-    po::store(parsed, vm);
-    po::notify(vm);
-  } catch(const po::error& e) {
-    throw Cli_error(std::string(e.what()) + " (see 'dlf sphere --help')");
-  }
-  if(vm.count("help")) {
-    std::cout << sphere_help << "\n" << visible;
-    return false;
-  }
-  const std::vector<std::string> inputs = vm.count("input") ? vm["input"].as<std::vector<std::string> >()
-                                                              : std::vector<std::string>();
-  if(inputs.size() != 1) throw Cli_error("dlf sphere needs exactly one INPUT mesh (see 'dlf sphere --help')");
-  s.input = inputs[0];
+}
+
+// The checks of the parsed command line, in the order of their messages.
+void check_sphere_arguments(const po::variables_map& vm, const std::vector<po::option>& ordered, Sphere_settings& s)
+{
   if(!(s.options.tolerance >= 0)) throw Cli_error("--tolerance must be >= 0");
   if(!(s.options.sphere.log_area_tolerance >= 0)) throw Cli_error("--log-area-tolerance must be >= 0");
   if(s.options.sphere.threads < 0) throw Cli_error("--threads must be 0 (automatic) or positive");
@@ -176,23 +154,41 @@ bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_setting
     if(!vm["start"].defaulted()) throw Cli_error("--init-map and --start exclude each other");
     s.start = "given";
   }
+  set_verbosity(vm, s.verbosity);
+  read_region_arguments(vm, ordered, s.density);
+  check_svg_options(vm, !s.svg.empty(), s.density.has_density(), s.svg_options);
+}
+
+// The flow's options from the checked settings.
+void set_sphere_flow_options(const po::variables_map& vm, Sphere_settings& s)
+{
   s.options.sphere.start = s.start == "conformal"    ? SMP::Discrete_lie_flow_sphere_start::CONFORMAL
                          : s.start == "mean-value" ? SMP::Discrete_lie_flow_sphere_start::MEAN_VALUE
                                                    : SMP::Discrete_lie_flow_sphere_start::TUTTE;
   s.options.mode = mode_of(s.mode);
   s.options.paper.lump_targets_on_flowing_faces = vm.count("literal-targets") == 0;
   s.options.paper.delaunay_flips = vm.count("no-flips") == 0;
-  if(vm.count("quiet") && vm.count("verbose")) throw Cli_error("--quiet and --verbose exclude each other");
-  if(vm.count("quiet")) s.verbosity = Verbosity::QUIET;
-  if(vm.count("verbose")) s.verbosity = Verbosity::VERBOSE;
   s.history_in_report = vm.count("history") > 0;
-  s.density.regions = regions_in_order(ordered);
-  if(!s.density.density_file.empty() && !s.density.regions.empty())
-    throw Cli_error("--density and --roi/--roi-ball exclude each other");
-  if(vm.count("band") && s.density.regions.empty()) throw Cli_error("--band applies to --roi and --roi-ball only");
-  if(!(s.density.band >= 0) || !std::isfinite(s.density.band)) throw Cli_error("--band must be a number >= 0");
-  check_svg_options(vm, !s.svg.empty(), s.density.has_density(), s.svg_options);
   s.options.record_history = s.history_in_report || !s.convergence_svg.empty();
+}
+
+} // namespace
+
+bool parse_sphere_arguments(const std::vector<std::string>& args, Sphere_settings& s)
+{
+  po::options_description visible("Options");
+  add_sphere_options(visible, s);
+  std::vector<po::option> ordered;
+  const po::variables_map vm = parse_command_line("sphere", glue_region_balls(args), visible, "input", &ordered);
+  if(vm.count("help")) {
+    std::cout << sphere_help << "\n" << visible;
+    return false;
+  }
+  const std::vector<std::string> inputs = positional_arguments(vm, "input");
+  if(inputs.size() != 1) throw Cli_error("dlf sphere needs exactly one INPUT mesh (see 'dlf sphere --help')");
+  s.input = inputs[0];
+  check_sphere_arguments(vm, ordered, s);
+  set_sphere_flow_options(vm, s);
   return true;
 }
 
@@ -293,15 +289,7 @@ json sphere_report(const Sphere_settings& s, const Indexed_mesh& input, const Sp
   const SMP::Discrete_lie_flow_report& R = o.report;
   const Density_setup& density = o.density;
   const bool ok = o.ok();
-  json j;
-  j["status"] = run_status(o.status, R);
-  j["message"] = R.message;
-  j["input"] = s.input;
-  j["vertices"] = input.xyz.size();
-  j["faces"] = input.faces.size();
-  j["iterations"] = R.iterations;
-  j["stop_reason"] = SMP::discrete_lie_flow_stop_reason_name(R.stop_reason);
-  j["seconds"] = seconds_json(io, R.seconds_initial, R.seconds_flow, o.seconds);
+  json j = run_report_head(o.status, R, s.input, input, io, o.seconds);
   j["options"] = { { "tolerance", s.options.tolerance }, { "log_area_tolerance", s.options.sphere.log_area_tolerance },
                    { "share_tolerance", s.options.certified.share_tolerance },
                    { "max_iterations", s.options.max_iterations },
@@ -361,11 +349,10 @@ Cli_error sphere_failure(const Sphere_settings& s, const Sphere_outcome& o)
                    o.input_error() ? EXIT_BAD_INPUT : EXIT_FLOW_ERROR);
 }
 
-int sphere_command(const std::vector<std::string>& args)
+namespace {
+
+void declare_sphere_outputs(Output_files& outputs, const Sphere_settings& s)
 {
-  Sphere_settings s;
-  if(!parse_sphere_arguments(args, s)) return EXIT_OK;
-  Output_files outputs;
   if(!s.output.empty()) outputs.declare(s.output, "-o");
   if(!s.report.empty()) outputs.declare(s.report, "--report");
   if(!s.csv.empty()) outputs.declare(s.csv, "--csv");
@@ -373,50 +360,26 @@ int sphere_command(const std::vector<std::string>& args)
   if(!s.svg.empty()) outputs.declare(s.svg, "--svg");
   if(!s.convergence_svg.empty()) outputs.declare(s.convergence_svg, "--plot-convergence");
   if(!s.histogram_svg.empty()) outputs.declare(s.histogram_svg, "--plot-histogram");
+}
 
-  Command_seconds io;
-  const auto since = [](std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  };
-  auto t0 = std::chrono::steady_clock::now();
-  const Indexed_mesh input = read_triangle_mesh(s.input);
-  if(!s.init_map_file.empty()) s.init_map = read_start_map(s.init_map_file, input);
-  io.read = since(t0);
-  Progress progress(s.verbosity, s.mode != "certified");
-  s.options.callback = progress.callback();
-  Sphere_outcome outcome;
-  t0 = std::chrono::steady_clock::now();
-  try {
-    outcome = compute_sphere(input, s);
-  } catch(...) {
-    progress.finish();
-    throw;
-  }
-  progress.finish();
-  io.check = (std::max)(0., since(t0) - outcome.seconds);
+// The sphere points with the input's faces (-o) and with the flowing
+// triangulation (--domain-mesh: flipped in paper and literal mode, the
+// input's otherwise).
+void write_sphere_meshes(Output_files& outputs, const Sphere_settings& s, const Indexed_mesh& input,
+                         const Sphere_outcome& outcome)
+{
   const SMP::Discrete_lie_flow_report& R = outcome.report;
-  const bool ok = outcome.ok();
-  const double total = outcome.seconds;
-  const std::vector<Vec3>& points = outcome.points;
-  const Density_setup& density = outcome.density;
-  const SMP::Error_code status = outcome.status;
-  // Input the command cannot use is refused without output, as `dlf disk`
-  // does; a flow error still gets its report.
-  const bool input_error = outcome.input_error();
-
   auto write_points = [&](std::ostream& o) {
-    for(const Vec3& p : points) o << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    for(const Vec3& p : outcome.points) o << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
   };
-  t0 = std::chrono::steady_clock::now();
-  if(ok && !s.output.empty())
+  if(!s.output.empty())
     outputs.write(s.output, [&](std::ostream& o) {
       o << "# dlf sphere " << s.input << ": d_area " << std::setprecision(10) << R.final_metrics.d_area << "\n"
         << std::setprecision(17);
       write_points(o);
       for(const Triangle& t : input.faces) o << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
     });
-  // The flowing triangulation: flipped in paper and literal mode, the input's otherwise.
-  if(ok && !s.domain_mesh.empty())
+  if(!s.domain_mesh.empty())
     outputs.write(s.domain_mesh, [&](std::ostream& o) {
       o << "# dlf sphere " << s.input << ": mode " << s.mode << ", flowing triangulation\n" << std::setprecision(17);
       write_points(o);
@@ -425,57 +388,93 @@ int sphere_command(const std::vector<std::string>& args)
       else
         for(const Triangle& t : input.faces) o << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
     });
-  io.write = since(t0);
-  t0 = std::chrono::steady_clock::now();
+}
+
+// --svg, --plot-histogram, --plot-convergence.
+void write_sphere_pictures(Output_files& outputs, const Sphere_settings& s, const Indexed_mesh& input,
+                           const Sphere_outcome& outcome)
+{
+  const SMP::Discrete_lie_flow_report& R = outcome.report;
   std::ostringstream caption;
   caption << "dlf sphere " << s.input << ": d_area " << std::setprecision(10) << R.final_metrics.d_area;
-  if(ok && !s.svg.empty())
-    outputs.write(s.svg, [&](std::ostream& o) { 
-      write_svg_sphere(o, input, points, caption.str(), s.svg_options, density.face_density, region_faces(density));
+  if(!s.svg.empty())
+    outputs.write(s.svg, [&](std::ostream& o) {
+      write_svg_sphere(o, input, outcome.points, caption.str(), s.svg_options, outcome.density.face_density,
+                       region_faces(outcome.density));
     });
   // The initial map is not kept by the library: the result only.
-  if(ok && !s.histogram_svg.empty())
+  if(!s.histogram_svg.empty())
     outputs.write(s.histogram_svg, [&](std::ostream& o) {
-      write_log_ratio_histogram(o, std::vector<double>(), face_log_area_ratios(input, points, std::vector<double>()),
+      write_log_ratio_histogram(o, std::vector<double>(), face_log_area_ratios(input, outcome.points, std::vector<double>()),
                                 false, caption.str());
     });
-  if(ok && !s.convergence_svg.empty())
+  if(!s.convergence_svg.empty())
     outputs.write(s.convergence_svg, [&](std::ostream& o) {
       write_convergence_plot(o, R.history, R.initial_d_area, s.options.tolerance, caption.str());
     });
-  io.pictures = since(t0);
-  if((!s.report.empty() || !s.csv.empty()) && !input_error) {
-    const json j = sphere_report(s, input, outcome, io);
-    if(!s.report.empty()) outputs.write(s.report, [&](std::ostream& o) { o << j.dump(2) << '\n'; });
-    if(!s.csv.empty()) outputs.write(s.csv, [&](std::ostream& o) { write_csv_report(o, j); });
-  }
+}
+
+// The summary of a run that made a map.
+void print_sphere_summary(std::ostream& out, const Sphere_settings& s, const Indexed_mesh& input,
+                          const Sphere_outcome& outcome, const std::vector<std::string>& written)
+{
+  const SMP::Discrete_lie_flow_report& R = outcome.report;
+  out << std::setprecision(8) << "dlf sphere " << s.input << ": " << input.xyz.size() << " vertices, "
+      << input.faces.size() << " faces\n"
+      << "  status " << run_status(outcome.status, R) << ": " << R.message << "\n";
+  print_levels(out, R);
+  out << "  iterations " << R.iterations << " (" << SMP::discrete_lie_flow_stop_reason_name(R.stop_reason) << ")\n"
+      << "  d_area " << R.initial_metrics.d_area << " -> " << R.final_metrics.d_area << " (optimum 2)\n"
+      << "  inverted faces " << R.final_metrics.inverted_faces << "\n";
+  if(s.mode != "certified")
+    out << "  mode " << s.mode << ": edge flips " << R.flips << ", d_area on the flowing triangulation "
+        << R.final_d_area << ", input triangles folded " << R.caller_inverted_faces << "\n";
+  out << std::setprecision(3) << "  seconds: initial map " << R.seconds_initial << ", flow " << R.seconds_flow
+      << ", total " << outcome.seconds << "\n";
+  print_regions(out, outcome.density, "sphere", true);
+  for(const std::string& w : written) out << "  wrote " << w << "\n";
+}
+
+} // namespace
+
+int sphere_command(const std::vector<std::string>& args)
+{
+  Sphere_settings s;
+  if(!parse_sphere_arguments(args, s)) return EXIT_OK;
+  Output_files outputs;
+  declare_sphere_outputs(outputs, s);
+
+  Command_seconds io;
+  auto t0 = std::chrono::steady_clock::now();
+  const Indexed_mesh input = read_triangle_mesh(s.input);
+  if(!s.init_map_file.empty()) s.init_map = read_start_map(s.init_map_file, input);
+  io.read = seconds_since(t0);
+  t0 = std::chrono::steady_clock::now();
+  const Sphere_outcome outcome =
+    run_with_progress(s.verbosity, s.mode != "certified", s.options, [&] { return compute_sphere(input, s); });
+  io.check = (std::max)(0., seconds_since(t0) - outcome.seconds);
+  const bool ok = outcome.ok();
+
+  t0 = std::chrono::steady_clock::now();
+  if(ok) write_sphere_meshes(outputs, s, input, outcome);
+  io.write = seconds_since(t0);
+  t0 = std::chrono::steady_clock::now();
+  if(ok) write_sphere_pictures(outputs, s, input, outcome);
+  io.pictures = seconds_since(t0);
+  // Input the command cannot use is refused without output, as `dlf disk`
+  // does; a flow error still gets its report.
+  if((!s.report.empty() || !s.csv.empty()) && !outcome.input_error())
+    write_report_files(outputs, s.report, s.csv, sphere_report(s, input, outcome, io));
   outputs.commit();
 
-  if(s.verbosity != Verbosity::QUIET && ok) {
-    std::cout << std::setprecision(8) << "dlf sphere " << s.input << ": " << input.xyz.size() << " vertices, "
-              << input.faces.size() << " faces\n"
-              << "  status " << run_status(status, R) << ": " << R.message << "\n";
-    if(ok) {
-      print_levels(std::cout, R);
-      std::cout << "  iterations " << R.iterations << " (" << SMP::discrete_lie_flow_stop_reason_name(R.stop_reason) << ")\n"
-                << "  d_area " << R.initial_metrics.d_area << " -> " << R.final_metrics.d_area << " (optimum 2)\n"
-                << "  inverted faces " << R.final_metrics.inverted_faces << "\n";
-      if(s.mode != "certified")
-        std::cout << "  mode " << s.mode << ": edge flips " << R.flips << ", d_area on the flowing triangulation "
-                  << R.final_d_area << ", input triangles folded " << R.caller_inverted_faces << "\n";
-      std::cout << std::setprecision(3) << "  seconds: initial map " << R.seconds_initial << ", flow " << R.seconds_flow
-                << ", total " << total << "\n";
-    }
-    print_regions(std::cout, density, "sphere", ok);
-    for(const std::string& w : outputs.committed()) std::cout << "  wrote " << w << "\n";
-  }
+  if(s.verbosity != Verbosity::QUIET && ok) print_sphere_summary(std::cout, s, input, outcome, outputs.committed());
   // A region that missed its share is not an error (the map is valid), but never silent.
-  for(const Density_region& r : density.regions)
+  for(const Density_region& r : outcome.density.regions)
     if(ok && !(std::abs(r.relative_error()) <= region_share_tolerance))
       std::cerr << "dlf: warning: region " << r.name << " got " << r.achieved << " of the sphere's area, prescribed "
                 << r.prescribed << "\n";
   if(!ok) throw sphere_failure(s, outcome);
-  return exit_code_of_ok_run(R, false);
+  return exit_code_of_ok_run(outcome.report, false);
 }
 
 } // namespace dlf_cli

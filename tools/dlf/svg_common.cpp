@@ -42,18 +42,32 @@ double signed_area(const Vec3& a, const Vec3& b, const Vec3& c)
   return det < 0 ? -area : area;
 }
 
+} // namespace
+
+std::vector<double> weighted_face_areas(const Indexed_mesh& mesh, const std::vector<double>& face_density)
+{
+  std::vector<double> area(mesh.faces.size());
+  for(std::size_t f = 0; f < area.size(); ++f) {
+    const Triangle& t = mesh.faces[f];
+    area[f] = SMP::discrete_lie_flow_triangle_area(mesh.xyz[t[0]], mesh.xyz[t[1]], mesh.xyz[t[2]]) *
+              (face_density.empty() ? 1. : face_density[f]);
+  }
+  return area;
+}
+
+namespace {
+
 template <class Point>
 std::vector<double> log_ratios(const Indexed_mesh& mesh, const std::vector<Point>& domain,
                                const std::vector<double>& face_density)
 {
   const std::size_t F = mesh.faces.size();
-  std::vector<double> a3(F), a2(F), out(F, std::numeric_limits<double>::quiet_NaN());
+  const std::vector<double> a3 = weighted_face_areas(mesh, face_density);
+  std::vector<double> a2(F), out(F, std::numeric_limits<double>::quiet_NaN());
   double sum3 = 0, sum2 = 0;
   long balance = 0;
   for(std::size_t f = 0; f < F; ++f) {
     const Triangle& t = mesh.faces[f];
-    a3[f] = SMP::discrete_lie_flow_triangle_area(mesh.xyz[t[0]], mesh.xyz[t[1]], mesh.xyz[t[2]]) *
-            (face_density.empty() ? 1. : face_density[f]);
     a2[f] = signed_area(domain[t[0]], domain[t[1]], domain[t[2]]);
     balance += a2[f] > 0 ? 1 : a2[f] < 0 ? -1 : 0;
     sum3 += a3[f];

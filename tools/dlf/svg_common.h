@@ -46,6 +46,9 @@ void write_colour_bar(std::ostream& out, double x, double y, double height, bool
 /// or not (domain / (ρ·surface)), with a density or not.
 std::string ratio_quantity(bool raw, bool has_density);
 
+/// Per face: its surface area times its density (1 where `face_density` is empty).
+std::vector<double> weighted_face_areas(const Indexed_mesh& mesh, const std::vector<double>& face_density);
+
 /// Per face: log(area_Ω / (ρ area_M)) after the uniform scaling of the
 /// metrics (the domain's total area made equal to Σ ρ area_M); NaN for a face
 /// whose domain triangle is flat or, by the sign of its double-precision area,

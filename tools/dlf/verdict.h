@@ -3,15 +3,20 @@
 //
 // The tool's verdict on a run whose parameterizer returned OK: converged, or
 // a valid, fold-free map short of its targets, which is not "Success" — the
-// report's status, the summary, a warning and the exit code (3) say so.
+// report's status, the summary, a warning and the exit code (3) say so; and
+// the report's first fields, which `dlf disk` and `dlf sphere` share.
 
 #ifndef DLF_CLI_VERDICT_H
 #define DLF_CLI_VERDICT_H
 
 #include "cli_error.h"
+#include "mesh_input.h"
+#include "output_files.h"
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
+
+#include <nlohmann/json.hpp>
 
 #include <iostream>
 #include <string>
@@ -26,6 +31,26 @@ inline std::string run_status(CGAL::Surface_mesh_parameterization::Error_code co
   namespace SMP = CGAL::Surface_mesh_parameterization;
   if(code == SMP::OK && !R.converged()) return "not_converged";
   return SMP::discrete_lie_flow_error_name(code);
+}
+
+/// The first fields of the reports of `dlf disk` and `dlf sphere`, in their
+/// order: status, message, input, vertices, faces, iterations, stop_reason,
+/// seconds (`total`: the parameterizer's whole call).
+inline nlohmann::ordered_json run_report_head(CGAL::Surface_mesh_parameterization::Error_code code,
+                                              const CGAL::Surface_mesh_parameterization::Discrete_lie_flow_report& R,
+                                              const std::string& input_name, const Indexed_mesh& input,
+                                              const Command_seconds& io, double total)
+{
+  nlohmann::ordered_json j;
+  j["status"] = run_status(code, R);
+  j["message"] = R.message;
+  j["input"] = input_name;
+  j["vertices"] = input.xyz.size();
+  j["faces"] = input.faces.size();
+  j["iterations"] = R.iterations;
+  j["stop_reason"] = CGAL::Surface_mesh_parameterization::discrete_lie_flow_stop_reason_name(R.stop_reason);
+  j["seconds"] = seconds_json(io, R.seconds_initial, R.seconds_flow, total);
+  return j;
 }
 
 /// What may get a run that did not converge to its targets, by why it stopped.
