@@ -195,10 +195,7 @@ public:
 
   void bound(Flow_step& step)
   {
-    const std::vector<Face>& F = m_tri.faces;
-    step.critical = smallest_critical_step(F.size(), [&](std::size_t t, double) {
-      return critical_step_2(m_uv[F[t][0]], m_uv[F[t][1]], m_uv[F[t][2]], m_vel[F[t][0]], m_vel[F[t][1]], m_vel[F[t][2]]);
-    }, step.limiting);
+    step.critical = planar_critical_step(m_uv, m_tri.faces, m_vel, step.limiting);
     step.lambda = paper_first_step(m_opt, step.critical);
   }
 
@@ -238,10 +235,8 @@ public:
     m_uv = m_best_uv;
     signed_areas_2(m_uv, m_best_faces, m_u);
     out.final_d_area = d_area_of(m_u, m_best_target);
-    out.final_residual = area_residual(m_n, m_best_faces, m_u, m_best_target);
-    out.symbolic_analyses = m_solver.analyses();
-    out.domain_faces = m_best_faces;
-    out.domain_target = m_best_target;
+    set_final_domain(out, area_residual(m_n, m_best_faces, m_u, m_best_target), m_solver.analyses(), m_best_faces,
+                     m_best_target);
   }
 
 private:

@@ -125,6 +125,21 @@ struct Volume_flow_outcome
   double energy = 0;
 };
 
+/// Runs the volumetric policy `flow` by `run_flow()`: the driver's counts,
+/// the policy's conjugate-gradient steps and final D_vol.
+template <class Policy>
+Volume_flow_outcome run_volume_policy(Policy& flow, const Discrete_lie_flow_options& opt)
+{
+  const Flow_outcome o = run_flow(flow, opt);
+  Volume_flow_outcome out;
+  out.stop_reason = o.stop_reason;
+  out.iterations = o.iterations;
+  out.rejected_by_exact_check = o.rejected_by_exact_check;
+  out.cg_iterations = flow.cg_iterations();
+  out.energy = flow.energy();
+  return out;
+}
+
 /// The energy E = 1 + U Σ_t c_t / χ(u_t), c_t = (target_t / Σ target)², U = Σ u_t;
 /// with χ(u) = u it is D_vol = Σ w_t (r_t + 1/r_t), w_t = target_t / Σ target,
 /// r_t = (u_t/U)/w_t, whose minimum 2 is reached when every tet has its share.
@@ -671,14 +686,7 @@ inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vect
   const Discrete_lie_flow_options opt = volume_driver_options(
     O, history, [&tet_order](int f) { return f >= 0 ? tet_order[std::size_t(f)] : -1; },
     [&flow] { return flow.last_cg_iterations(); });
-  const Flow_outcome o = run_flow(flow, opt);
-  Volume_flow_outcome out;
-  out.stop_reason = o.stop_reason;
-  out.iterations = o.iterations;
-  out.rejected_by_exact_check = o.rejected_by_exact_check;
-  out.cg_iterations = flow.cg_iterations();
-  out.energy = flow.energy();
-  return out;
+  return run_volume_policy(flow, opt);
 }
 
 } // namespace dlf

@@ -303,6 +303,7 @@ public:
   double progress() const { return m_best; } // the stop tests watch the best D_vol
   double residual() const { return 0; }      // not part of the volumetric record
   double energy() const { return m_best; }
+  std::size_t cg_iterations() const { return 0; } // no conjugate gradients
 
   void finish(Flow_outcome& out)
   {
@@ -362,13 +363,7 @@ inline Volume_flow_outcome run_volume_paper_flow(std::vector<Vec3>& x, const std
   const Discrete_lie_flow_options opt =
     volume_driver_options(O, history, [](int f) { return f; }, [] { return std::size_t(0); });
   Volume_paper_flow flow(x, tets, on_border, border_faces, target, O, levels, opt);
-  const Flow_outcome o = run_flow(flow, opt);
-  Volume_flow_outcome out;
-  out.stop_reason = o.stop_reason;
-  out.iterations = o.iterations;
-  out.rejected_by_exact_check = o.rejected_by_exact_check;
-  out.energy = flow.energy();
-  return out;
+  return run_volume_policy(flow, opt);
 }
 
 } // namespace dlf
