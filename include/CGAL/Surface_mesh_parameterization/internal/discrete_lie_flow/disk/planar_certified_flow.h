@@ -192,9 +192,7 @@ public:
   void commit(const Flow_step& step, Flow_outcome& out)
   {
     if(m_newton) m_eps = updated_regularization(m_eps, step.halvings);
-    for(std::size_t v = 0; v < m_n; ++v)
-      if(m_dofs.boundary_of[v] >= 0 && m_dofs.count[v] > 0)
-        m_curve.commit(std::size_t(m_dofs.boundary_of[v]), step.lambda * m_d[m_dofs.first[v]]);
+    commit_border_step(m_dofs, step.lambda, m_d, m_curve);
     m_uv.swap(m_trial);
     m_u.swap(m_u_trial);
     if(m_coupled && m_log_opening && m_E - m_E_trial < m_settings.log_opening_least_gain * (m_E - 2))

@@ -145,6 +145,15 @@ inline bool potential_gradient_direction(const std::vector<Vec2>& uv, const std:
   return moves;
 }
 
+/// After a step of length `lambda` along the dof direction `d`: each
+/// border vertex's place on `curve` moves by its dof (a fixed corner stays).
+inline void commit_border_step(const Planar_dofs& dofs, double lambda, const Eigen::VectorXd& d, Boundary_curve& curve)
+{
+  for(std::size_t v = 0; v < dofs.boundary_of.size(); ++v)
+    if(dofs.boundary_of[v] >= 0 && dofs.count[v] > 0)
+      curve.commit(std::size_t(dofs.boundary_of[v]), lambda * d[dofs.first[v]]);
+}
+
 /// The smallest critical step of the flowing faces `F` of `uv` at the
 /// vertex velocities `vel` (Eq. 5 with the corrected coefficients of
 /// Eq. 4); its face in `limiting`.

@@ -216,9 +216,7 @@ public:
 
   void commit(Flow_step& step, Flow_outcome& out)
   {
-    for(std::size_t v = 0; v < m_n; ++v)
-      if(m_dofs.boundary_of[v] >= 0 && m_dofs.count[v] > 0)
-        m_curve.commit(std::size_t(m_dofs.boundary_of[v]), step.lambda * m_d[m_dofs.first[v]]);
+    commit_border_step(m_dofs, step.lambda, m_d, m_curve);
     m_uv.swap(m_trial);
     step.flips = make_delaunay(out);
     signed_areas_2(m_uv, m_tri.faces, m_u);
