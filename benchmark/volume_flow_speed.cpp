@@ -66,17 +66,15 @@ int main(int argc, char** argv)
     return 2;
   }
   SMP::Discrete_lie_flow_volume_options O;
-  D::Volume_flow_settings S = D::volume_flow_settings(O);
   bool verbose = false;
   for(int i = 3; i < argc; ++i) {
     const std::string a = argv[i];
     if(a == "-v") verbose = true;
-    else if(a == "--no-forcing") S.cg_forcing = false;
-    else if(i + 1 < argc && a == "--eta-max") S.cg_forcing_max = std::atof(argv[++i]);
-    else if(i + 1 < argc && a == "--coarse") S.coarse_aggregate = std::size_t(std::atol(argv[++i]));
-    else if(i + 1 < argc && a == "--threads") S.threads = std::atoi(argv[++i]);
-    else if(i + 1 < argc && a == "--cg-iterations") S.cg_max_iterations = std::size_t(std::atol(argv[++i]));
-    else if(i + 1 < argc && a == "--max-iterations") S.max_iterations = std::size_t(std::atol(argv[++i]));
+    else if(a == "--no-forcing") O.cg_forcing = false;
+    else if(i + 1 < argc && a == "--coarse") O.coarse_aggregate = std::size_t(std::atol(argv[++i]));
+    else if(i + 1 < argc && a == "--threads") O.threads = std::atoi(argv[++i]);
+    else if(i + 1 < argc && a == "--cg-iterations") O.cg_max_iterations = std::size_t(std::atol(argv[++i]));
+    else if(i + 1 < argc && a == "--max-iterations") O.max_iterations = std::size_t(std::atol(argv[++i]));
     else { std::cerr << "unknown argument " << a << "\n"; return 2; }
   }
   D::Medit_tet_mesh in, start;
@@ -97,7 +95,7 @@ int main(int argc, char** argv)
   std::vector<D::Vec3> x = start.points;
   if(D::count_bad_tets(x, in.tets).not_positive() != 0) { std::cerr << "the start is not certified\n"; return 1; }
   if(verbose)
-    S.callback = [](const SMP::Discrete_lie_flow_volume_iteration& I) {
+    O.callback = [](const SMP::Discrete_lie_flow_volume_iteration& I) {
       std::printf("it %4zu  D_vol %.6f  step %.3g  cg %3zu  %.2f s\n", I.iteration, I.d_vol, I.step,
                   I.cg_iterations, I.seconds);
       std::fflush(stdout);
@@ -105,7 +103,7 @@ int main(int argc, char** argv)
     };
   const double user0 = user_seconds();
   const auto t0 = std::chrono::steady_clock::now();
-  const D::Volume_flow_outcome o = D::run_volume_flow(x, in.tets, topo.on_border, topo.border_faces, target, S);
+  const D::Volume_flow_outcome o = D::run_volume_flow(x, in.tets, topo.on_border, topo.border_faces, target, O);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const double user = user_seconds() - user0;
   std::vector<double> u;
@@ -114,7 +112,7 @@ int main(int argc, char** argv)
   const D::Tet_orientation_counts bad = D::count_bad_tets(x, in.tets);
   std::printf("tets %zu  threads %d  stop %d  iterations %zu  cg %zu  D_vol %.6f  inverted %zu  flat %zu  "
               "flow %.2f s  user %.2f s\n",
-              in.tets.size(), S.threads, int(o.stop_reason), o.iterations, o.cg_iterations, energy.value(u, 0),
+              in.tets.size(), O.threads, int(o.stop_reason), o.iterations, o.cg_iterations, energy.value(u, 0),
               bad.negative, bad.flat, wall, user);
   return 0;
 }

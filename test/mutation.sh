@@ -75,7 +75,7 @@ MUTATIONS=(
   "disk|holes: the caller's start kept (no Tutte embedding of the filled disk)|$INC/Discrete_lie_flow_parameterizer_3.h|const std::vector<D::Vec2> given(uv);\n    if(!D::filled_disk_tutte<|const std::vector<D::Vec2> given(uv);\n    if(false \&\& !D::filled_disk_tutte<|gtest inputs Holes.*"
   "disk|holes: the report counts the fill's faces|$DLF/disk/disk_flow.h|R.faces = P.caller_faces();|R.faces = P.faces.size();|gtest inputs Holes.*"
   "disk|literal mode: the full critical step (no μ)|$DLF/flow/literal_rules.h|: step_fraction(opt, literal_default_mu) * critical;|: critical;|gtest literal Literal.*:Errata.*"
-  "disk|literal mode: a folding step taken (no exact check)|$DLF/disk/planar_literal_flow.h|count_orientations_2(m_trial, m_tri.faces);|count_orientations_2(m_trial, std::vector<Face>());|gtest literal Literal.*:Errata.*"
+  "disk|literal mode: a folding step taken (no exact check)|$DLF/disk/planar_literal_flow.h|count_orientations_2(m_trial, m_tri.faces), out)|count_orientations_2(m_trial, std::vector<Face>()), out)|gtest literal Literal.*:Errata.*"
   # --- disk: the certified direction and energy
   "disk|certified disk flow: the exact check of a trial step skipped|$DLF/disk/planar_certified_flow.h|if(!certified_trial_2(m_trial, m_P.faces)) { ++out.rejected_by_exact_check; continue; }|if(false) { ++out.rejected_by_exact_check; continue; }|gtest features Features.RejectedByExactCheckIsCounted"
   "disk|Sobolev direction: the border moves up the gradient|$DLF/disk/sobolev_direction.h|const double s = -gs / m_diag[v];|const double s = gs / m_diag[v];|gtest numerics Sobolev_direction.*"

@@ -681,6 +681,17 @@ TEST(Volume, UntanglingStopsWhenTheCallbackSaysSo)
   EXPECT_EQ(calls, 1u);
 }
 
+/// The options these tests run the flow alone with: the public defaults,
+/// except a cap of 200 conjugate-gradient steps per solve and no
+/// star-shaped border.
+SMP::Discrete_lie_flow_volume_options flow_test_options()
+{
+  SMP::Discrete_lie_flow_volume_options O;
+  O.cg_max_iterations = 200;
+  O.star_shaped_border = false;
+  return O;
+}
+
 TEST(Volume, FlowOnTheSharedDriverRecordsStopsAndResumes)
 {
   // The flow runs as a policy of run_flow(): every iteration reaches the
@@ -710,11 +721,10 @@ TEST(Volume, FlowOnTheSharedDriverRecordsStopsAndResumes)
   const double E0 = energy.value(u, 0);
   ASSERT_GT(E0 - 2, 0.01);
 
-  D::Volume_flow_settings S;
-  S.star_shaped_border = false;
+  SMP::Discrete_lie_flow_volume_options O = flow_test_options();
   std::vector<D::Volume_iteration> seen, history;
-  S.callback = [&](const D::Volume_iteration& I) { seen.push_back(I); return seen.size() < 2; };
-  D::Volume_flow_outcome out = D::run_volume_flow(x, m.tets, topo.on_border, topo.border_faces, target, S, &history);
+  O.callback = [&](const D::Volume_iteration& I) { seen.push_back(I); return seen.size() < 2; };
+  D::Volume_flow_outcome out = D::run_volume_flow(x, m.tets, topo.on_border, topo.border_faces, target, O, {}, &history);
   EXPECT_EQ(out.stop_reason, SMP::Discrete_lie_flow_stop_reason::INTERRUPTED);
   EXPECT_EQ(out.iterations, 2u);
   ASSERT_EQ(history.size(), 2u);
@@ -736,18 +746,18 @@ TEST(Volume, FlowOnTheSharedDriverRecordsStopsAndResumes)
   EXPECT_EQ(out.energy, history.back().d_vol);
   EXPECT_EQ(D::count_bad_tets(x, m.tets).not_positive(), 0u);
 
-  S.callback = nullptr;
-  S.max_iterations = 1;
-  out = D::run_volume_flow(x, m.tets, topo.on_border, topo.border_faces, target, S);
+  O.callback = nullptr;
+  O.max_iterations = 1;
+  out = D::run_volume_flow(x, m.tets, topo.on_border, topo.border_faces, target, O);
   EXPECT_EQ(out.stop_reason, SMP::Discrete_lie_flow_stop_reason::ITERATION_CAP);
   EXPECT_EQ(out.iterations, 1u);
   EXPECT_LT(out.energy, previous);
 
-  S.max_iterations = 1000;
-  out = D::run_volume_flow(x, m.tets, topo.on_border, topo.border_faces, target, S);
+  O.max_iterations = 1000;
+  out = D::run_volume_flow(x, m.tets, topo.on_border, topo.border_faces, target, O);
   EXPECT_EQ(out.stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED);
   D::tet_dets(x, m.tets, u);
-  EXPECT_LE(energy.value(u, 0) - 2, S.tolerance);
+  EXPECT_LE(energy.value(u, 0) - 2, O.tolerance);
   EXPECT_EQ(D::count_bad_tets(x, m.tets).not_positive(), 0u);
 }
 
@@ -783,16 +793,15 @@ TEST(Volume, FlowGivesTheSamePointsBitForBitWhateverTheNumberOfThreads)
   const std::pair<std::size_t, std::size_t> cases[] = { { 0, 16 }, { 0, 0 }, { 2, 64 } }; // (cholesky_every, coarse)
   for(const auto& c : cases) {
     const std::size_t cholesky = c.first, coarse = c.second;
-    D::Volume_flow_settings S;
-    S.star_shaped_border = false;
-    S.cholesky_every = cholesky;
-    S.coarse_aggregate = coarse;
+    SMP::Discrete_lie_flow_volume_options O = flow_test_options();
+    O.cholesky_every = cholesky;
+    O.coarse_aggregate = coarse;
     std::vector<D::Vec3> one;
     D::Volume_flow_outcome first;
     for(int threads : { 1, 2, 3 }) {
-      S.threads = threads;
+      O.threads = threads;
       std::vector<D::Vec3> x = x0;
-      const D::Volume_flow_outcome out = D::run_volume_flow(x, m.tets, topo.on_border, topo.border_faces, target, S);
+      const D::Volume_flow_outcome out = D::run_volume_flow(x, m.tets, topo.on_border, topo.border_faces, target, O);
       EXPECT_EQ(out.stop_reason, SMP::Discrete_lie_flow_stop_reason::CONVERGED) << threads;
       EXPECT_EQ(D::count_bad_tets(x, m.tets).not_positive(), 0u);
       if(threads == 1) {
@@ -827,12 +836,12 @@ TEST(Volume, CoarseMatrixIsTheGaussNewtonMatrixOnTheAggregates)
   D::Ball_topology topo;
   std::vector<double> target;
   volume_start(m, x, topo, target);
+  const D::Volume_share_levels no_levels;
   for(std::size_t k : { 1, 16, 100 }) {
-    D::Volume_flow_settings S;
-    S.star_shaped_border = false;
-    S.coarse_aggregate = k;
+    SMP::Discrete_lie_flow_volume_options O = flow_test_options();
+    O.coarse_aggregate = k;
     std::vector<D::Vec3> y = x;
-    D::Volume_certified_flow flow(y, m.tets, topo.on_border, topo.border_faces, target, S);
+    D::Volume_certified_flow flow(y, m.tets, topo.on_border, topo.border_faces, target, O, no_levels);
     D::Flow_outcome out;
     ASSERT_TRUE(flow.start(out));
     flow.direction(out);
@@ -851,10 +860,11 @@ TEST(Volume, CoarseMatrixIsTheGaussNewtonMatrixOnTheAggregates)
       EXPECT_GT(by_products.norm(), 0.);
     }
   }
-  D::Volume_flow_settings S;
-  S.coarse_aggregate = 0;
+  SMP::Discrete_lie_flow_volume_options O = flow_test_options();
+  O.star_shaped_border = true;
+  O.coarse_aggregate = 0;
   std::vector<D::Vec3> y = x;
-  D::Volume_certified_flow flow(y, m.tets, topo.on_border, topo.border_faces, target, S);
+  D::Volume_certified_flow flow(y, m.tets, topo.on_border, topo.border_faces, target, O, no_levels);
   D::Flow_outcome out;
   ASSERT_TRUE(flow.start(out));
   flow.direction(out);

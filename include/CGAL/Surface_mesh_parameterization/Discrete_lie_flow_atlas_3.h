@@ -23,6 +23,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -134,6 +135,218 @@ inline void normalize_chart(const Atlas_piece& piece, std::vector<Vec2>& uv, dou
   for(Vec2& p : uv) p = {{ (signed_area < 0 ? -p[0] : p[0]) * s, p[1] * s }};
 }
 
+/// The caller's mesh in index form, faces in the order of faces(mesh), and
+/// the halfedge of every corner (3f + k: the halfedge whose target is
+/// corner k); `OK`, or the error and `message` (a non-finite coordinate, a
+/// face that is not a triangle).
+template <class TriangleMesh>
+Error_code index_atlas_mesh(const TriangleMesh& mesh, Atlas_piece& all,
+                            std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& corner_halfedge,
+                            std::string& message)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  auto index = get(CGAL::dynamic_vertex_property_t<int>(), mesh);
+  const typename internal::Kernel_traits<TriangleMesh>::PPM ppmap = get(vertex_point, mesh);
+  for(vertex_descriptor v : vertices(mesh)) {
+    const auto& p = get(ppmap, v);
+    put(index, v, int(all.xyz.size()));
+    all.xyz.push_back({{ CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) }});
+    const Vec3& q = all.xyz.back();
+    if(!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2])) {
+      message = "vertex " + std::to_string(all.xyz.size() - 1) + " has a non-finite coordinate";
+      return Error_code(ERROR_DEGENERATE_INPUT);
+    }
+  }
+  for(face_descriptor f : faces(mesh)) {
+    Face t;
+    std::size_t k = 0;
+    for(halfedge_descriptor h : halfedges_around_face(next(halfedge(f, mesh), mesh), mesh)) {
+      if(k < 3) { t[k] = get(index, target(h, mesh)); corner_halfedge.push_back(h); }
+      ++k;
+    }
+    if(k != 3) {
+      message = "face " + std::to_string(all.faces.size()) + " has " + std::to_string(k) +
+                " vertices; triangulate the mesh first";
+      return ERROR_NON_TRIANGULAR_MESH;
+    }
+    all.caller_face.push_back(all.faces.size());
+    all.faces.push_back(t);
+  }
+  return OK;
+}
+
+/// The atlas's checks of the faces: some, none of zero area, and a valid
+/// `face_density` (then copied into `all`); `OK`, or the error and `message`.
+inline Error_code check_atlas_faces(Atlas_piece& all, const std::vector<double>& face_density, std::string& message)
+{
+  if(all.faces.empty()) {
+    message = "the mesh has no faces (" + std::to_string(all.xyz.size()) + " vertices)";
+    return ERROR_EMPTY_MESH;
+  }
+  std::size_t degenerate = 0, first_degenerate = 0;
+  for(std::size_t f = 0; f < all.faces.size(); ++f) {
+    const Face& t = all.faces[f];
+    if(!(triangle_area_3(all.xyz[std::size_t(t[0])], all.xyz[std::size_t(t[1])], all.xyz[std::size_t(t[2])]) > 0))
+      if(degenerate++ == 0) first_degenerate = f;
+  }
+  if(degenerate == all.faces.size()) {
+    message = "all " + std::to_string(degenerate) + " faces have zero area";
+    return Error_code(ERROR_DEGENERATE_INPUT);
+  }
+  if(degenerate > 0) {
+    const Face& t = all.faces[first_degenerate];
+    message = std::to_string(degenerate) + " faces have zero area; first: face " + std::to_string(first_degenerate) +
+              " (vertices " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]) + ")";
+    return Error_code(ERROR_DEGENERATE_INPUT);
+  }
+  if(face_density.empty()) return OK;
+  if(face_density.size() != all.faces.size()) {
+    message = "the density has " + std::to_string(face_density.size()) + " values for " +
+              std::to_string(all.faces.size()) + " faces";
+    return Error_code(ERROR_INVALID_DENSITY);
+  }
+  for(std::size_t f = 0; f < all.faces.size(); ++f)
+    if(!(face_density[f] > 0) || !std::isfinite(face_density[f])) {
+      message = "the density of face " + std::to_string(f) + " is " + std::to_string(face_density[f]);
+      return Error_code(ERROR_INVALID_DENSITY);
+    }
+  all.density = face_density;
+  return OK;
+}
+
+/// The vertices of `all` that no face uses.
+inline std::size_t isolated_vertices(const Atlas_piece& all)
+{
+  std::vector<char> used(all.xyz.size(), 0);
+  for(const Face& t : all.faces)
+    for(int v : t) used[std::size_t(v)] = 1;
+  return std::size_t(std::count(used.begin(), used.end(), char(0)));
+}
+
+/// The charts, each turned counter-clockwise and scaled to its share
+/// `area[c] / total` of the surface, packed into the unit square: treemap
+/// cells with `stretch_to_fill`, else (or where a cell has no room for the
+/// gutter) shelves. `uv` gets the charts' points; `OK` with the report's
+/// scale and stretch, or the error and `message` when they do not fit.
+inline Error_code pack_atlas_charts(std::vector<Atlas_chart>& charts, const std::vector<double>& area, double total,
+                                    const Discrete_lie_flow_atlas_options& options,
+                                    std::vector<std::vector<Vec2> >& uv, Discrete_lie_flow_atlas_report& R,
+                                    std::string& message)
+{
+  uv.resize(charts.size());
+  for(std::size_t c = 0; c < charts.size(); ++c) {
+    normalize_chart(charts[c].piece, charts[c].uv, area[c] / total);
+    uv[c].swap(charts[c].uv);
+  }
+  double stretch = 1;
+  bool filled = options.stretch_to_fill;
+  const std::vector<std::vector<Vec2> > unplaced = uv;
+  double s = filled ? fill_charts(uv, options.gutter, stretch) : 0.;
+  if(!(s > 0)) { // no room for the gutter in some cell: shelves
+    uv = unplaced;
+    filled = false;
+    stretch = 1;
+    s = pack_charts(uv, options.gutter);
+  }
+  if(!(s > 0)) {
+    message = "the " + std::to_string(charts.size()) + " charts do not fit in the unit square with a gutter of " +
+              std::to_string(options.gutter);
+    return ERROR_WRONG_PARAMETER;
+  }
+  R.scale = (filled ? s : s * s) / total;
+  R.max_chart_stretch = stretch;
+  return OK;
+}
+
+/// Per corner 3f + k of the caller's `faces`: its uv, and its vertex among
+/// the charts' vertices numbered chart after chart (the seam's sides).
+inline void atlas_corners(const std::vector<Atlas_chart>& charts, const std::vector<std::vector<Vec2> >& uv,
+                          std::size_t faces, std::vector<Vec2>& corner_uv, std::vector<std::size_t>& corner_vertex)
+{
+  corner_uv.resize(3 * faces);
+  corner_vertex.resize(3 * faces);
+  std::size_t offset = 0;
+  for(std::size_t c = 0; c < charts.size(); ++c) {
+    const Atlas_piece& P = charts[c].piece;
+    for(std::size_t f = 0; f < P.faces.size(); ++f)
+      for(std::size_t k = 0; k < 3; ++k) {
+        const std::size_t corner = 3 * P.caller_face[f] + k;
+        corner_uv[corner] = uv[c][std::size_t(P.faces[f][k])];
+        corner_vertex[corner] = offset + std::size_t(P.faces[f][k]);
+      }
+    offset += P.xyz.size();
+  }
+}
+
+/// Every chart's report, with its share `area[c] / total`, into the atlas's.
+inline void add_chart_reports(std::vector<Atlas_chart>& charts, const std::vector<double>& area, double total,
+                              Discrete_lie_flow_atlas_report& R)
+{
+  for(std::size_t c = 0; c < charts.size(); ++c) {
+    charts[c].report.area_share = area[c] / total;
+    R.three_border_corner_faces += charts[c].report.three_border_corner_faces;
+    if(charts[c].report.stop_reason != Discrete_lie_flow_stop_reason::CONVERGED) ++R.unconverged_charts;
+    R.chart_reports.push_back(charts[c].report);
+  }
+  R.charts = charts.size();
+}
+
+/// The length of the seams: the caller's edges whose sides lie at
+/// different chart vertices (`corner_vertex`, atlas_corners()).
+inline double atlas_seam_length(const std::vector<Vec3>& xyz, const std::vector<Face>& faces,
+                                const std::vector<long>& twin, const std::vector<std::size_t>& corner_vertex)
+{
+  double length = 0;
+  for(std::size_t h = 0; h < twin.size(); ++h) {
+    const long o = twin[h];
+    if(o < 0 || std::size_t(o) < h) continue;
+    if(corner_vertex[h] != corner_vertex[next_in_face(std::size_t(o))] ||
+       corner_vertex[next_in_face(h)] != corner_vertex[std::size_t(o)])
+      length += norm3(sub(xyz[std::size_t(faces[h / 3][h % 3])], xyz[std::size_t(faces[h / 3][(h % 3 + 1) % 3])]));
+  }
+  return length;
+}
+
+/// The exact checks of the atlas (uv triangles' orientations, overlapping
+/// charts, points outside the square) and its distortion, uv area and
+/// surface area, on the corners of the caller's `faces` of `all`.
+inline void measure_atlas(const Atlas_piece& all, const std::vector<Face>& faces, const std::vector<Vec2>& corner_uv,
+                          const std::vector<std::vector<Vec2> >& uv, Discrete_lie_flow_atlas_report& R)
+{
+  std::vector<Vec3> corner_xyz(corner_uv.size());
+  std::vector<Face> corner_faces(faces.size());
+  for(std::size_t f = 0; f < faces.size(); ++f) {
+    corner_faces[f] = {{ int(3 * f), int(3 * f + 1), int(3 * f + 2) }};
+    for(std::size_t k = 0; k < 3; ++k) corner_xyz[3 * f + k] = all.xyz[std::size_t(faces[f][k])];
+  }
+  const Orientation_count oc = count_orientations_2(corner_uv, corner_faces);
+  R.inverted_faces = oc.inverted;
+  R.degenerate_faces = oc.degenerate;
+  R.overlapping_chart_pairs = overlapping_chart_pairs(uv, R.points_outside);
+  R.metrics = planar_distortion(corner_xyz, corner_uv, corner_faces, all.density);
+  double uv_area = 0, area = 0;
+  for(std::size_t f = 0; f < faces.size(); ++f) {
+    uv_area += signed_area_2(corner_uv[3 * f], corner_uv[3 * f + 1], corner_uv[3 * f + 2]);
+    area += triangle_area_3(corner_xyz[3 * f], corner_xyz[3 * f + 1], corner_xyz[3 * f + 2]);
+  }
+  R.packing_efficiency = uv_area;
+  R.surface_area = area;
+}
+
+/// "Success"; short of the goals, how many charts, and the first one's own
+/// message, which names the goal its flow missed and its value.
+inline std::string atlas_message(const Discrete_lie_flow_atlas_report& R)
+{
+  for(std::size_t c = 0; c < R.chart_reports.size() && R.unconverged_charts > 0; ++c)
+    if(R.chart_reports[c].stop_reason != Discrete_lie_flow_stop_reason::CONVERGED)
+      return "not converged: " + std::to_string(R.unconverged_charts) + " of " + std::to_string(R.charts) +
+             " charts stopped short of their goals (a valid atlas still); the first, chart " + std::to_string(c) +
+             " (" + std::to_string(R.chart_reports[c].faces) + " faces): " + R.chart_reports[c].message;
+  return "Success";
+}
+
 } // namespace dlf
 } // namespace internal
 
@@ -193,11 +406,8 @@ Discrete_lie_flow_atlas_report discrete_lie_flow_atlas(const TriangleMesh& mesh,
 {
   namespace D = internal::dlf;
   typedef std::chrono::steady_clock Clock;
-  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
-  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
-  typedef typename internal::Kernel_traits<TriangleMesh>::Kernel Kernel;
-  typedef typename Kernel::Point_2 Point_2;
+  typedef typename internal::Kernel_traits<TriangleMesh>::Kernel::Point_2 Point_2;
   const Clock::time_point start = Clock::now();
   Discrete_lie_flow_atlas_report R;
   auto fail = [&R, start](Error_code code, const std::string& message) {
@@ -211,161 +421,47 @@ Discrete_lie_flow_atlas_report discrete_lie_flow_atlas(const TriangleMesh& mesh,
   if(!(options.gutter >= 0 && options.gutter < 1))
     return fail(ERROR_WRONG_PARAMETER, "the gutter must be in [0, 1), not " + std::to_string(options.gutter));
 
-  // The mesh in index form, faces in the order of faces(mesh).
   D::Atlas_piece all;
-  auto index = get(CGAL::dynamic_vertex_property_t<int>(), mesh);
-  const typename internal::Kernel_traits<TriangleMesh>::PPM ppmap = get(vertex_point, mesh);
-  for(vertex_descriptor v : vertices(mesh)) {
-    const auto& p = get(ppmap, v);
-    put(index, v, int(all.xyz.size()));
-    all.xyz.push_back({{ CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) }});
-    const D::Vec3& q = all.xyz.back();
-    if(!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
-      return fail(Error_code(ERROR_DEGENERATE_INPUT), "vertex " + std::to_string(all.xyz.size() - 1) + " has a non-finite coordinate");
-  }
-  std::vector<halfedge_descriptor> corner_halfedge; // 3f + k → the halfedge whose target is corner k
-  std::vector<char> used(all.xyz.size(), 0);
-  std::size_t degenerate = 0, first_degenerate = 0;
-  for(face_descriptor f : faces(mesh)) {
-    D::Face t;
-    std::size_t k = 0;
-    for(halfedge_descriptor h : halfedges_around_face(next(halfedge(f, mesh), mesh), mesh)) {
-      if(k < 3) { t[k] = get(index, target(h, mesh)); corner_halfedge.push_back(h); }
-      ++k;
-    }
-    if(k != 3)
-      return fail(ERROR_NON_TRIANGULAR_MESH, "face " + std::to_string(all.faces.size()) + " has " + std::to_string(k) +
-                  " vertices; triangulate the mesh first");
-    const std::size_t fi = all.faces.size();
-    if(!(D::triangle_area_3(all.xyz[std::size_t(t[0])], all.xyz[std::size_t(t[1])], all.xyz[std::size_t(t[2])]) > 0))
-      if(degenerate++ == 0) first_degenerate = fi;
-    for(int v : t) used[std::size_t(v)] = 1;
-    all.faces.push_back(t);
-    all.caller_face.push_back(fi);
-  }
-  if(all.faces.empty())
-    return fail(ERROR_EMPTY_MESH, "the mesh has no faces (" + std::to_string(all.xyz.size()) + " vertices)");
-  if(degenerate == all.faces.size())
-    return fail(Error_code(ERROR_DEGENERATE_INPUT), "all " + std::to_string(degenerate) + " faces have zero area");
-  if(degenerate > 0) {
-    const D::Face& t = all.faces[first_degenerate];
-    return fail(Error_code(ERROR_DEGENERATE_INPUT), std::to_string(degenerate) + " faces have zero area; first: face " +
-                std::to_string(first_degenerate) + " (vertices " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " +
-                std::to_string(t[2]) + ")");
-  }
-  if(!options.flow.face_density.empty()) {
-    if(options.flow.face_density.size() != all.faces.size())
-      return fail(Error_code(ERROR_INVALID_DENSITY), "the density has " + std::to_string(options.flow.face_density.size()) +
-                  " values for " + std::to_string(all.faces.size()) + " faces");
-    for(std::size_t f = 0; f < all.faces.size(); ++f)
-      if(!(options.flow.face_density[f] > 0) || !std::isfinite(options.flow.face_density[f]))
-        return fail(Error_code(ERROR_INVALID_DENSITY), "the density of face " + std::to_string(f) + " is " +
-                    std::to_string(options.flow.face_density[f]));
-    all.density = options.flow.face_density;
-  }
-  for(char u : used) R.isolated_vertices += u ? 0 : 1;
+  std::vector<halfedge_descriptor> corner_halfedge;
+  std::string message;
+  Error_code code = D::index_atlas_mesh(mesh, all, corner_halfedge, message);
+  if(code == OK) code = D::check_atlas_faces(all, options.flow.face_density, message);
+  if(code != OK) return fail(code, message);
+  R.isolated_vertices = D::isolated_vertices(all);
   const std::vector<D::Face> caller_faces = all.faces;
   const std::vector<long> caller_twin = D::halfedge_twins(caller_faces);
 
-  // Components → charts, each flattened and scaled to its share.
-  const Clock::time_point t0 = Clock::now();
+  // Components → charts, each flattened.
   std::vector<D::Atlas_piece> components = D::split_components(all);
   R.components = components.size();
   if(options.progress) options.progress(std::to_string(R.components) + " component(s), " + std::to_string(all.faces.size()) + " faces");
   std::vector<D::Atlas_chart> charts;
-  const Error_code code = D::make_atlas_charts(std::move(components), options,
+  code = D::make_atlas_charts(std::move(components), options,
     [&options](const D::Atlas_piece& p, std::vector<D::Vec2>& uv, Discrete_lie_flow_atlas_chart& c) {
       D::flatten_atlas_chart(p, options, uv, c);
     }, charts, R);
   if(code != OK) return fail(code, R.message);
-  (void)t0;
 
+  // Each chart scaled to its share of the area, the charts packed.
   const Clock::time_point t1 = Clock::now();
   double total = 0;
   std::vector<double> chart_area(charts.size());
   for(std::size_t c = 0; c < charts.size(); ++c) total += (chart_area[c] = D::piece_area(charts[c].piece));
-  std::vector<std::vector<D::Vec2> > uv(charts.size());
-  for(std::size_t c = 0; c < charts.size(); ++c) {
-    D::normalize_chart(charts[c].piece, charts[c].uv, chart_area[c] / total);
-    uv[c].swap(charts[c].uv);
-  }
-  double stretch = 1;
-  bool filled = options.stretch_to_fill;
-  const std::vector<std::vector<D::Vec2> > unplaced = uv;
-  double s = filled ? D::fill_charts(uv, options.gutter, stretch) : 0.;
-  if(!(s > 0)) { // no room for the gutter in some cell: shelves
-    uv = unplaced;
-    filled = false;
-    stretch = 1;
-    s = D::pack_charts(uv, options.gutter);
-  }
-  if(!(s > 0))
-    return fail(ERROR_WRONG_PARAMETER, "the " + std::to_string(charts.size()) + " charts do not fit in the unit square with a gutter of " +
-                std::to_string(options.gutter));
-  R.scale = (filled ? s : s * s) / total;
-  R.max_chart_stretch = stretch;
+  std::vector<std::vector<D::Vec2> > uv;
+  code = D::pack_atlas_charts(charts, chart_area, total, options, uv, R, message);
+  if(code != OK) return fail(code, message);
 
-  // Per corner: the uv, and the chart vertex (for the seam).
-  std::vector<D::Vec2> corner_uv(3 * caller_faces.size());
-  std::vector<std::size_t> corner_vertex(3 * caller_faces.size());
-  std::size_t offset = 0;
-  for(std::size_t c = 0; c < charts.size(); ++c) {
-    const D::Atlas_piece& P = charts[c].piece;
-    for(std::size_t f = 0; f < P.faces.size(); ++f)
-      for(std::size_t k = 0; k < 3; ++k) {
-        const std::size_t corner = 3 * P.caller_face[f] + k;
-        corner_uv[corner] = uv[c][std::size_t(P.faces[f][k])];
-        corner_vertex[corner] = offset + std::size_t(P.faces[f][k]);
-      }
-    offset += P.xyz.size();
-    charts[c].report.area_share = chart_area[c] / total;
-    R.three_border_corner_faces += charts[c].report.three_border_corner_faces;
-    if(charts[c].report.stop_reason != Discrete_lie_flow_stop_reason::CONVERGED) ++R.unconverged_charts;
-    R.chart_reports.push_back(charts[c].report);
-  }
-  R.charts = charts.size();
-  for(std::size_t h = 0; h < caller_twin.size(); ++h) {
-    const long o = caller_twin[h];
-    if(o < 0 || std::size_t(o) < h) continue;
-    if(corner_vertex[h] != corner_vertex[D::next_in_face(std::size_t(o))] ||
-       corner_vertex[D::next_in_face(h)] != corner_vertex[std::size_t(o)])
-      R.seam_length += D::norm3(D::sub(all.xyz[std::size_t(caller_faces[h / 3][h % 3])],
-                                       all.xyz[std::size_t(caller_faces[h / 3][(h % 3 + 1) % 3])]));
-  }
-
-  // The exact checks and the whole atlas's distortion, on corners.
-  std::vector<D::Vec3> corner_xyz(corner_uv.size());
-  std::vector<D::Face> corner_faces(caller_faces.size());
-  for(std::size_t f = 0; f < caller_faces.size(); ++f) {
-    corner_faces[f] = {{ int(3 * f), int(3 * f + 1), int(3 * f + 2) }};
-    for(std::size_t k = 0; k < 3; ++k) corner_xyz[3 * f + k] = all.xyz[std::size_t(caller_faces[f][k])];
-  }
-  const D::Orientation_count oc = D::count_orientations_2(corner_uv, corner_faces);
-  R.inverted_faces = oc.inverted;
-  R.degenerate_faces = oc.degenerate;
-  R.overlapping_chart_pairs = D::overlapping_chart_pairs(uv, R.points_outside);
-  R.metrics = D::planar_distortion(corner_xyz, corner_uv, corner_faces, all.density);
-  double uv_area = 0, area = 0;
-  for(std::size_t f = 0; f < caller_faces.size(); ++f) {
-    uv_area += D::signed_area_2(corner_uv[3 * f], corner_uv[3 * f + 1], corner_uv[3 * f + 2]);
-    area += D::triangle_area_3(corner_xyz[3 * f], corner_xyz[3 * f + 1], corner_xyz[3 * f + 2]);
-  }
-  R.packing_efficiency = uv_area;
-  R.surface_area = area;
+  std::vector<D::Vec2> corner_uv;
+  std::vector<std::size_t> corner_vertex;
+  D::atlas_corners(charts, uv, caller_faces.size(), corner_uv, corner_vertex);
+  D::add_chart_reports(charts, chart_area, total, R);
+  R.seam_length = D::atlas_seam_length(all.xyz, caller_faces, caller_twin, corner_vertex);
+  D::measure_atlas(all, caller_faces, corner_uv, uv, R);
   for(std::size_t corner = 0; corner < corner_uv.size(); ++corner)
     put(uvmap, corner_halfedge[corner], Point_2(corner_uv[corner][0], corner_uv[corner][1]));
   R.seconds_pack = std::chrono::duration<double>(Clock::now() - t1).count();
   R.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  R.message = "Success";
-  // Short of the goals: how many charts, and the first one's own message,
-  // which names the goal its flow missed and its value.
-  for(std::size_t c = 0; c < R.chart_reports.size() && R.unconverged_charts > 0; ++c)
-    if(R.chart_reports[c].stop_reason != Discrete_lie_flow_stop_reason::CONVERGED) {
-      R.message = "not converged: " + std::to_string(R.unconverged_charts) + " of " + std::to_string(R.charts) +
-                  " charts stopped short of their goals (a valid atlas still); the first, chart " + std::to_string(c) +
-                  " (" + std::to_string(R.chart_reports[c].faces) + " faces): " + R.chart_reports[c].message;
-      break;
-    }
+  R.message = D::atlas_message(R);
   return R;
 }
 

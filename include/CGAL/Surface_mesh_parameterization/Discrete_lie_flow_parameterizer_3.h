@@ -8,6 +8,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/disk_flow.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/loop_triangulation.h>
@@ -220,7 +221,8 @@ struct Always_false : std::false_type {};
 ///   start and the start's border spacing by area (the same map to rounding).
 /// \tparam SolverTraits_ `CGAL::Eigen_solver_traits<S>` with `S` an Eigen
 ///   sparse SPD solver offering `analyzePattern()`/`factorize()`. Default:
-///   CHOLMOD's supernodal LLT when available, else `Eigen::SimplicialLDLT`.
+///   `Discrete_lie_flow_default_spd_solver` (CHOLMOD's supernodal LLT when
+///   available, else `Eigen::SimplicialLDLT`).
 template <class TriangleMesh_, class InitialParameterizer_ = Default, class SolverTraits_ = Default>
 class Discrete_lie_flow_parameterizer_3
 {
@@ -235,7 +237,7 @@ public:
     Initial_parameterizer;
   /// The solver traits of the flow's sparse SPD systems.
   typedef typename Default::Get<SolverTraits_,
-    Eigen_solver_traits<internal::dlf::Default_spd_solver> >::type Solver_traits;
+    Eigen_solver_traits<Discrete_lie_flow_default_spd_solver> >::type Solver_traits;
 
   /// Vertex descriptor of the mesh.
   typedef typename boost::graph_traits<Triangle_mesh>::vertex_descriptor vertex_descriptor;

@@ -8,6 +8,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_solver.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_sphere_3.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_volume_options.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/default_solver.h>
@@ -52,13 +53,14 @@ namespace Surface_mesh_parameterization {
 ///
 /// \tparam SolverTraits_ `CGAL::Eigen_solver_traits<S>` with `S` an Eigen
 ///   sparse SPD solver with `analyzePattern()`/`factorize()` for Tutte's system of the start (the border's spherical map uses its own default).
+///   Default: `Discrete_lie_flow_default_spd_solver`.
 template <class SolverTraits_ = Default>
 class Discrete_lie_flow_volume_parameterizer_3
 {
 public:
   /// The solver traits of the start's sparse SPD system (Tutte's embedding).
   typedef typename Default::Get<SolverTraits_,
-    Eigen_solver_traits<internal::dlf::Default_spd_solver> >::type Solver_traits;
+    Eigen_solver_traits<Discrete_lie_flow_default_spd_solver> >::type Solver_traits;
 
   /// \param options flow settings (tolerances, caps, density, callback)
   explicit Discrete_lie_flow_volume_parameterizer_3(const Discrete_lie_flow_volume_options& options =

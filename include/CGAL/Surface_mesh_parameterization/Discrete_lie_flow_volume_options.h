@@ -18,7 +18,14 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 
 /// \ingroup PkgDiscreteLieFlowOptions
-/// Settings of `Discrete_lie_flow_volume_parameterizer_3`.
+/// Settings of `Discrete_lie_flow_volume_parameterizer_3`. Both flows read
+/// `tolerance`, `max_iterations`, `mu`, `star_shaped_border`,
+/// `share_tolerance` and `callback`; the certified mode also the conjugate
+/// gradients' settings (`cg_max_iterations`, `cholesky_every`,
+/// `coarse_aggregate`, `cg_forcing`) and `threads`, the paper mode
+/// `paper_collapse_guard`. The start reads `border`,
+/// `untangle_max_iterations` and `callback`, the run `mode`, `tet_density`
+/// and `record_history`.
 struct Discrete_lie_flow_volume_options
 {
   /// Which flow moves the vertices from the certified start: `CERTIFIED`
@@ -47,9 +54,10 @@ struct Discrete_lie_flow_volume_options
   /// iterations to a lower D_vol on meshes with protrusions, each several
   /// times dearer; doc/volume.md).
   std::size_t cholesky_every = 0;
-  /// Threads of the flow's per-tetrahedron and per-vertex passes: 0 (the
-  /// default) automatic, one below 150,000 tetrahedra, else the hardware
-  /// threads (at most 8); the result is the same whatever the number.
+  /// Threads of the certified flow's per-tetrahedron and per-vertex passes
+  /// (the paper mode runs on one): 0 (the default) automatic, one below
+  /// 150,000 tetrahedra, else the hardware threads (at most 8); the result
+  /// is the same whatever the number.
   int threads = 0;
   /// The conjugate gradients' coarse level: aggregates of this many
   /// vertices (spatially compact), each moving by one translation, solved

@@ -79,6 +79,52 @@ inline std::vector<Atlas_piece> single_faces(const Atlas_piece& P)
   return out;
 }
 
+/// A piece waiting for make_atlas_charts(): its depth in splits, whether it
+/// was cut open already, how many times it gave up border triangles.
+struct Atlas_work_item
+{
+  Atlas_piece piece;
+  std::size_t depth;
+  bool cut;
+  std::size_t peels;
+};
+
+/// The parts of `P` (closed, or of genus > 0) cut open along its seam
+/// through `tips` tips (atlas_cut_graph.h); `R` counts the closed
+/// components and the largest genus.
+inline std::vector<Atlas_piece> cut_open_piece(const Atlas_piece& P, const std::vector<long>& twin,
+                                               const Piece_topology& T, std::size_t tips,
+                                               Discrete_lie_flow_atlas_report& R)
+{
+  if(T.loops.empty()) ++R.closed_components;
+  R.max_genus = (std::max)(R.max_genus, std::size_t((std::max)(0L, T.genus())));
+  double length = 0;
+  const std::vector<char> seam = piece_seam(P, twin, T, tips, length);
+  Atlas_piece opened = P;
+  open_along(opened, twin, seam);
+  return split_components(opened);
+}
+
+/// The triangles of `it.piece` with three border corners, each a piece of
+/// its own, then the components of the rest, back on the `work` queue
+/// (counted in `R.peeled_faces`).
+inline void peel_border_faces(const Atlas_work_item& it, const std::vector<long>& twin,
+                              std::deque<Atlas_work_item>& work, Discrete_lie_flow_atlas_report& R)
+{
+  const std::vector<char> fixed = three_border_corner_mask(it.piece, twin);
+  std::vector<std::size_t> rest;
+  for(std::size_t f = 0; f < fixed.size(); ++f)
+    if(fixed[f]) {
+      work.push_back(Atlas_work_item{ sub_piece(it.piece, std::vector<std::size_t>(1, f)), it.depth, false, it.peels + 1 });
+      ++R.peeled_faces;
+    }
+    else
+      rest.push_back(f);
+  if(!rest.empty())
+    for(Atlas_piece& part : split_components(sub_piece(it.piece, rest)))
+      work.push_back(Atlas_work_item{ std::move(part), it.depth, false, it.peels + 1 });
+}
+
 /// Cuts and flattens `components` into charts. `flatten(piece, uv, chart)`
 /// fills `uv` (all triangles positive) and the chart's code, stop reason,
 /// iterations and D_area. Returns `OK`, or the code of a chart that could
@@ -88,7 +134,7 @@ Error_code make_atlas_charts(std::vector<Atlas_piece> components, const Discrete
                              Flatten flatten, std::vector<Atlas_chart>& charts, Discrete_lie_flow_atlas_report& R)
 {
   typedef std::chrono::steady_clock Clock;
-  struct Item { Atlas_piece piece; std::size_t depth; bool cut; std::size_t peels; };
+  typedef Atlas_work_item Item;
   std::deque<Item> work;
   for(Atlas_piece& c : components) work.push_back(Item{ std::move(c), 0, false, 0 });
   while(!work.empty()) {
@@ -99,13 +145,8 @@ Error_code make_atlas_charts(std::vector<Atlas_piece> components, const Discrete
     const Piece_topology T = piece_topology(it.piece, twin);
     const bool chart = T.disk() || (T.genus() == 0 && !T.loops.empty());
     if(!chart && !it.cut) {
-      if(T.loops.empty()) ++R.closed_components;
-      R.max_genus = (std::max)(R.max_genus, std::size_t((std::max)(0L, T.genus())));
-      double length = 0;
-      const std::vector<char> seam = piece_seam(it.piece, twin, T, opt.tips, length);
-      Atlas_piece opened = it.piece;
-      open_along(opened, twin, seam);
-      for(Atlas_piece& part : split_components(opened)) work.push_back(Item{ std::move(part), it.depth, true, 0 });
+      for(Atlas_piece& part : cut_open_piece(it.piece, twin, T, opt.tips, R))
+        work.push_back(Item{ std::move(part), it.depth, true, 0 });
       R.seconds_cut += std::chrono::duration<double>(Clock::now() - t0).count();
       continue;
     }
@@ -151,18 +192,7 @@ Error_code make_atlas_charts(std::vector<Atlas_piece> components, const Discrete
     }
     // No split left: the triangles the border pins leave first.
     if(!good && C.report.three_border_corner_faces > 0 && it.peels < opt.max_border_peels) {
-      const std::vector<char> fixed = three_border_corner_mask(it.piece, twin);
-      std::vector<std::size_t> rest;
-      for(std::size_t f = 0; f < fixed.size(); ++f)
-        if(fixed[f]) {
-          work.push_back(Item{ sub_piece(it.piece, std::vector<std::size_t>(1, f)), it.depth, false, it.peels + 1 });
-          ++R.peeled_faces;
-        }
-        else
-          rest.push_back(f);
-      if(!rest.empty())
-        for(Atlas_piece& part : split_components(sub_piece(it.piece, rest)))
-          work.push_back(Item{ std::move(part), it.depth, false, it.peels + 1 });
+      peel_border_faces(it, twin, work, R);
       continue;
     }
     // No split left (the depth, the size, or no two halves): one chart per

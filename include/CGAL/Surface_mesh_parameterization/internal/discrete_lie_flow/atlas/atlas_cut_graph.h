@@ -182,19 +182,17 @@ inline std::vector<long> fenced_path(const Closed_surface& S, const std::vector<
   return path;
 }
 
-/// The cut graph of the closed surface `S` through `tips` (at least one),
-/// as a flag per canonical halfedge (`S.edge(h)`). Cutting along it
-/// leaves one disk; with one tip and genus 0 it is empty.
-inline std::vector<char> cut_graph(const Closed_surface& S, const std::vector<int>& tips)
+/// The tips' tree of the cut graph of `S`: from `tips[0]`, each next tip,
+/// the nearest, joined by a fenced path to the tree so far (a plain
+/// shortest path where no fenced one exists). Its edges are set in `cut`
+/// (per canonical halfedge), `parent[v]` the halfedge into each of its
+/// vertices from its parent (towards the seam); returns its vertices.
+inline std::vector<int> join_tips(const Closed_surface& S, const std::vector<int>& tips, std::vector<char>& cut,
+                                  std::vector<long>& parent)
 {
-  const std::size_t V = S.vertices(), H = S.twin.size();
-  std::vector<char> cut(H, 0), tree(H, 0), is_tip(V, 0);
-  for(int t : tips) is_tip[std::size_t(t)] = 1;
-  std::vector<long> parent(V, -1); // halfedge into v from its parent, in the primal tree
+  const std::size_t V = S.vertices();
   std::vector<double> dist;
   std::vector<long> via;
-  // The tips' tree: each next tip, the nearest, by a fenced path to the
-  // tree so far (a plain shortest path where no fenced one exists).
   std::vector<int> on_tree(1, tips[0]);
   std::vector<char> joined(tips.size(), 0);
   joined[0] = 1;
@@ -246,17 +244,14 @@ inline std::vector<char> cut_graph(const Closed_surface& S, const std::vector<in
     std::vector<int> start = capped ? rim[next] : std::vector<int>(1, tips[next]);
     set_mark(next, 1);
     std::vector<long> hs = fenced_path(S, start, mark);
+    set_mark(next, 2);
     if(!hs.empty()) {
-      set_mark(next, 2);
       add_path(hs, capped ? tips[next] : -1);
       continue;
     }
-    set_mark(next, 2);
     // No fenced path: the plain shortest path to the tree.
-    std::vector<long> plain;
-    for(int v = tips[next]; via[std::size_t(v)] >= 0; v = S.from(std::size_t(via[std::size_t(v)])))
-      plain.push_back(S.twin[std::size_t(via[std::size_t(v)])]);
-    for(long h : plain) {
+    for(int v = tips[next]; via[std::size_t(v)] >= 0; v = S.from(std::size_t(via[std::size_t(v)]))) {
+      const long h = S.twin[std::size_t(via[std::size_t(v)])];
       const int a = S.from(std::size_t(h)), b = S.to(std::size_t(h));
       parent[std::size_t(a)] = S.twin[std::size_t(h)];
       cut[S.edge(std::size_t(h))] = 1;
@@ -265,15 +260,14 @@ inline std::vector<char> cut_graph(const Closed_surface& S, const std::vector<in
       on_tree.push_back(a);
     }
   }
-  // The primal tree: the tips' tree, then shortest paths to it.
-  cut_dijkstra(S, on_tree, dist, via);
-  for(std::size_t v = 0; v < V; ++v) {
-    if(parent[v] < 0) parent[v] = via[v];
-    if(parent[v] >= 0) tree[S.edge(std::size_t(parent[v]))] = 1;
-  }
-  // The cotree: a spanning tree of the dual across the edges outside the tree.
-  const std::size_t F = S.faces.size();
-  std::vector<char> seen(F, 0), cotree(H, 0);
+  return on_tree;
+}
+
+/// The cotree of `S`: a spanning tree of the dual across the edges outside
+/// the primal `tree` (flags per canonical halfedge, both).
+inline std::vector<char> dual_cotree(const Closed_surface& S, const std::vector<char>& tree)
+{
+  std::vector<char> seen(S.faces.size(), 0), cotree(S.twin.size(), 0);
   std::vector<std::size_t> stack(1, 0);
   seen[0] = 1;
   while(!stack.empty()) {
@@ -286,24 +280,15 @@ inline std::vector<char> cut_graph(const Closed_surface& S, const std::vector<in
       if(!seen[g]) { seen[g] = 1; cotree[S.edge(h)] = 1; stack.push_back(g); }
     }
   }
-  // Every edge in neither tree closes a loop through the root: the loop
-  // goes into the cut with the tree paths from both its ends.
-  auto to_root = [&](int v) {
-    for(; parent[std::size_t(v)] >= 0; v = S.from(std::size_t(parent[std::size_t(v)]))) {
-      const std::size_t e = S.edge(std::size_t(parent[std::size_t(v)]));
-      if(cut[e]) break; // the rest of the way is in the cut already
-      cut[e] = 1;
-    }
-  };
-  for(std::size_t h = 0; h < H; ++h)
-    if(S.edge(h) == h && !tree[h] && !cotree[h]) {
-      cut[h] = 1;
-      to_root(S.from(h));
-      to_root(S.to(h));
-    }
-  // Prune the branches that end at no tip.
+  return cotree;
+}
+
+/// Prunes from `cut` the branches that end at no tip.
+inline void prune_cut(const Closed_surface& S, const std::vector<char>& is_tip, std::vector<char>& cut)
+{
+  const std::size_t V = S.vertices();
   std::vector<int> degree(V, 0);
-  for(std::size_t h = 0; h < H; ++h)
+  for(std::size_t h = 0; h < cut.size(); ++h)
     if(cut[h]) { ++degree[std::size_t(S.from(h))]; ++degree[std::size_t(S.to(h))]; }
   std::vector<int> leaves;
   for(std::size_t v = 0; v < V; ++v)
@@ -322,6 +307,42 @@ inline std::vector<char> cut_graph(const Closed_surface& S, const std::vector<in
       break;
     }
   }
+}
+
+/// The cut graph of the closed surface `S` through `tips` (at least one),
+/// as a flag per canonical halfedge (`S.edge(h)`). Cutting along it
+/// leaves one disk; with one tip and genus 0 it is empty.
+inline std::vector<char> cut_graph(const Closed_surface& S, const std::vector<int>& tips)
+{
+  const std::size_t V = S.vertices(), H = S.twin.size();
+  std::vector<char> cut(H, 0), tree(H, 0), is_tip(V, 0);
+  for(int t : tips) is_tip[std::size_t(t)] = 1;
+  std::vector<long> parent(V, -1); // halfedge into v from its parent, in the primal tree
+  // The primal tree: the tips' tree, then shortest paths to it.
+  std::vector<double> dist;
+  std::vector<long> via;
+  cut_dijkstra(S, join_tips(S, tips, cut, parent), dist, via);
+  for(std::size_t v = 0; v < V; ++v) {
+    if(parent[v] < 0) parent[v] = via[v];
+    if(parent[v] >= 0) tree[S.edge(std::size_t(parent[v]))] = 1;
+  }
+  const std::vector<char> cotree = dual_cotree(S, tree);
+  // Every edge in neither tree closes a loop through the root: the loop
+  // goes into the cut with the tree paths from both its ends.
+  auto to_root = [&](int v) {
+    for(; parent[std::size_t(v)] >= 0; v = S.from(std::size_t(parent[std::size_t(v)]))) {
+      const std::size_t e = S.edge(std::size_t(parent[std::size_t(v)]));
+      if(cut[e]) break; // the rest of the way is in the cut already
+      cut[e] = 1;
+    }
+  };
+  for(std::size_t h = 0; h < H; ++h)
+    if(S.edge(h) == h && !tree[h] && !cotree[h]) {
+      cut[h] = 1;
+      to_root(S.from(h));
+      to_root(S.to(h));
+    }
+  prune_cut(S, is_tip, cut);
   return cut;
 }
 

@@ -53,17 +53,14 @@ inline bool interiors_overlap_2(const std::array<const Vec2*, 3>& a, const std::
   return true;
 }
 
-/// The score of the atlas `uv` (points) / `uv_faces` (per face, its corners'
-/// uv points) of the triangles `faces` over `xyz`.
-inline Atlas_score score_atlas(const std::vector<Vec3>& xyz, const std::vector<Face>& faces, const std::vector<Vec2>& uv,
-                               const std::vector<Face>& uv_faces)
+/// The charts of an atlas (faces joined across the 3D mesh's edges whose
+/// two sides share their uv points, `uv_faces`), a chart's root face per
+/// face; `S` gets their number and the seams' length (non-manifold edges
+/// count as cut, border edges not).
+inline std::vector<std::size_t> score_charts(const std::vector<Vec3>& xyz, const std::vector<Face>& faces,
+                                             const std::vector<Face>& uv_faces, Atlas_score& S)
 {
-  Atlas_score S;
   const std::size_t F = faces.size();
-  S.faces = F;
-  if(F == 0) return S;
-
-  // Charts and seams, across the edges of the 3D mesh.
   std::vector<std::size_t> parent(F);
   std::iota(parent.begin(), parent.end(), std::size_t(0));
   auto find = [&parent](std::size_t x) {
@@ -98,29 +95,17 @@ inline Atlas_score score_atlas(const std::vector<Vec3>& xyz, const std::vector<F
     chart[f] = find(f);
     if(chart[f] == f) ++S.charts;
   }
+  return chart;
+}
 
-  // Areas, orientations and the whole atlas's distortion, on corners.
-  std::vector<Vec3> corner_xyz(3 * F);
-  std::vector<Vec2> corner_uv(3 * F);
-  std::vector<Face> corner_faces(F);
-  Vec2 lo = uv[std::size_t(uv_faces[0][0])], hi = lo;
-  for(std::size_t f = 0; f < F; ++f) {
-    corner_faces[f] = {{ int(3 * f), int(3 * f + 1), int(3 * f + 2) }};
-    for(std::size_t k = 0; k < 3; ++k) {
-      corner_xyz[3 * f + k] = xyz[std::size_t(faces[f][k])];
-      const Vec2& p = corner_uv[3 * f + k] = uv[std::size_t(uv_faces[f][k])];
-      for(int i = 0; i < 2; ++i) { lo[i] = (std::min)(lo[i], p[i]); hi[i] = (std::max)(hi[i], p[i]); }
-    }
-    S.surface_area += triangle_area_3(corner_xyz[3 * f], corner_xyz[3 * f + 1], corner_xyz[3 * f + 2]);
-    S.uv_area += std::abs(signed_area_2(corner_uv[3 * f], corner_uv[3 * f + 1], corner_uv[3 * f + 2]));
-  }
-  S.bounding_width = hi[0] - lo[0];
-  S.bounding_height = hi[1] - lo[1];
-  if(S.bounding_width > 0 && S.bounding_height > 0) S.packing_efficiency = S.uv_area / (S.bounding_width * S.bounding_height);
-  S.metrics = planar_distortion(corner_xyz, corner_uv, corner_faces);
-  S.degenerate_faces = S.metrics.degenerate_faces;
-  // A chart mirrored as a whole is a valid map (another tool may emit one);
-  // a triangle against its own chart's orientation is a fold.
+/// The mirrored charts and the folds of an atlas on corners (`corner_uv`,
+/// face f at 3f, 3f + 1, 3f + 2): a chart mirrored as a whole is a valid
+/// map (another tool may emit one); a triangle against its own chart's
+/// orientation is a fold.
+inline void score_orientations(const std::vector<Vec2>& corner_uv, const std::vector<std::size_t>& chart,
+                               Atlas_score& S)
+{
+  const std::size_t F = chart.size();
   std::vector<double> chart_signed_area(F, 0.);
   std::vector<CGAL::Orientation> orientation(F);
   for(std::size_t f = 0; f < F; ++f) {
@@ -132,11 +117,16 @@ inline Atlas_score score_atlas(const std::vector<Vec3>& xyz, const std::vector<F
     if(orientation[f] == CGAL::COLLINEAR) continue;
     if((orientation[f] == CGAL::POSITIVE) != (chart_signed_area[chart[f]] >= 0)) ++S.inverted_faces;
   }
+}
 
-  // Overlaps: candidate pairs from a uniform grid of the uv box (a pair is
-  // tested in the one cell holding the lower-left corner of its boxes'
-  // intersection), then the exact test.
-  if(!(S.bounding_width > 0 && S.bounding_height > 0)) return S;
+/// The pairs of uv triangles whose interiors overlap, in all and within a
+/// chart: candidate pairs from a uniform grid of the uv box (lower corner
+/// `lo`, size in `S`; a pair is tested in the one cell holding the
+/// lower-left corner of its boxes' intersection), then the exact test.
+inline void score_overlaps(const std::vector<Vec2>& corner_uv, const std::vector<std::size_t>& chart, const Vec2& lo,
+                           Atlas_score& S)
+{
+  const std::size_t F = chart.size();
   const std::size_t n = (std::max)(std::size_t(1), std::size_t(std::sqrt(double(F))));
   auto cell = [&](double x, int i) {
     const double w = i == 0 ? S.bounding_width : S.bounding_height;
@@ -168,6 +158,41 @@ inline Atlas_score score_atlas(const std::vector<Vec3>& xyz, const std::vector<F
           if(chart[f] == chart[g]) ++S.overlapping_pairs_in_a_chart;
         }
     }
+}
+
+/// The score of the atlas `uv` (points) / `uv_faces` (per face, its corners'
+/// uv points) of the triangles `faces` over `xyz`.
+inline Atlas_score score_atlas(const std::vector<Vec3>& xyz, const std::vector<Face>& faces, const std::vector<Vec2>& uv,
+                               const std::vector<Face>& uv_faces)
+{
+  Atlas_score S;
+  const std::size_t F = faces.size();
+  S.faces = F;
+  if(F == 0) return S;
+  const std::vector<std::size_t> chart = score_charts(xyz, faces, uv_faces, S);
+
+  // Areas, the uv box and the whole atlas's distortion, on corners.
+  std::vector<Vec3> corner_xyz(3 * F);
+  std::vector<Vec2> corner_uv(3 * F);
+  std::vector<Face> corner_faces(F);
+  Vec2 lo = uv[std::size_t(uv_faces[0][0])], hi = lo;
+  for(std::size_t f = 0; f < F; ++f) {
+    corner_faces[f] = {{ int(3 * f), int(3 * f + 1), int(3 * f + 2) }};
+    for(std::size_t k = 0; k < 3; ++k) {
+      corner_xyz[3 * f + k] = xyz[std::size_t(faces[f][k])];
+      const Vec2& p = corner_uv[3 * f + k] = uv[std::size_t(uv_faces[f][k])];
+      for(int i = 0; i < 2; ++i) { lo[i] = (std::min)(lo[i], p[i]); hi[i] = (std::max)(hi[i], p[i]); }
+    }
+    S.surface_area += triangle_area_3(corner_xyz[3 * f], corner_xyz[3 * f + 1], corner_xyz[3 * f + 2]);
+    S.uv_area += std::abs(signed_area_2(corner_uv[3 * f], corner_uv[3 * f + 1], corner_uv[3 * f + 2]));
+  }
+  S.bounding_width = hi[0] - lo[0];
+  S.bounding_height = hi[1] - lo[1];
+  if(S.bounding_width > 0 && S.bounding_height > 0) S.packing_efficiency = S.uv_area / (S.bounding_width * S.bounding_height);
+  S.metrics = planar_distortion(corner_xyz, corner_uv, corner_faces);
+  S.degenerate_faces = S.metrics.degenerate_faces;
+  score_orientations(corner_uv, chart, S);
+  if(S.bounding_width > 0 && S.bounding_height > 0) score_overlaps(corner_uv, chart, lo, S);
   return S;
 }
 

@@ -8,23 +8,16 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_DEFAULT_SOLVER_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_DEFAULT_SOLVER_H
 
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/sparse_solver.h>
-
-#include <Eigen/SparseCholesky>
-#ifdef CGAL_DLF_USE_CHOLMOD
-#include <Eigen/CholmodSupport>
-#endif
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 namespace dlf {
 
-#ifdef CGAL_DLF_USE_CHOLMOD
-typedef Eigen::CholmodSupernodalLLT<Sparse_matrix, Eigen::Lower> Default_spd_solver;
-#else
-typedef Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Lower> Default_spd_solver;
-#endif
+// Defined in the public header: it is the parameterizers' default too.
+typedef Discrete_lie_flow_default_spd_solver Default_spd_solver;
 
 /// Coarser supernodes for the repeated factorisations of a large mesh's
 /// matrices (to be called before the first one). CHOLMOD enters OpenMP

@@ -76,26 +76,14 @@ Discrete_lie_flow_level flow_coarsest_level(const Disk_problem& P, const Disk_le
                                             std::vector<Vec2>& fine)
 {
   Disk_problem C;
-  std::vector<int> index(uv.size(), -1), vertex_of;
+  std::vector<int> index, vertex_of;
   C.faces = L.faces;
   C.target = L.target;
-  for(Face& f : C.faces)
-    for(int& v : f) {
-      if(index[std::size_t(v)] < 0) {
-        index[std::size_t(v)] = int(vertex_of.size());
-        vertex_of.push_back(v);
-        C.xyz.push_back(P.xyz[std::size_t(v)]);
-      }
-      v = index[std::size_t(v)];
-    }
+  renumber_coarsest_level(C.faces, P.xyz, C.xyz, index, vertex_of);
   for(int b : P.boundary) C.boundary.push_back(index[std::size_t(b)]);
   std::vector<Vec2> coarse_uv(vertex_of.size());
   for(std::size_t i = 0; i < vertex_of.size(); ++i) coarse_uv[i] = uv[std::size_t(vertex_of[i])];
-  Discrete_lie_flow_options coarse = opt;
-  coarse.callback = nullptr;
-  coarse.record_history = false;
-  coarse.tolerance = opt.tolerance * s.coarse_tolerance_share;
-  coarse.certified.share_tolerance = 0; // the finest level's faces hold the density's regions
+  const Discrete_lie_flow_options coarse = coarsest_level_options(opt, s);
   Planar_flow_settings settings = flow_settings;
   EigenSolver solver; // the caller's solver keeps the finest level's analysis
   // On the circle the coarsest level's border is spaced by area, as the
@@ -107,12 +95,7 @@ Discrete_lie_flow_level flow_coarsest_level(const Disk_problem& P, const Disk_le
                                           tutte.solver().analyses() > 0 ? &tutte.solver() : nullptr);
   const Flow_outcome flowed = run_flow(flow, coarse);
   for(std::size_t i = 0; i < vertex_of.size(); ++i) fine[std::size_t(vertex_of[i])] = coarse_uv[i];
-  Discrete_lie_flow_level level;
-  level.vertices = vertex_of.size();
-  level.faces = C.faces.size();
-  level.iterations = flowed.iterations;
-  level.d_area = flowed.final_d_area;
-  return level;
+  return coarsest_level_record(vertex_of.size(), C.faces.size(), flowed);
 }
 
 /// Puts the vertices `D` removed back into `fine` (prolong_disk_level())

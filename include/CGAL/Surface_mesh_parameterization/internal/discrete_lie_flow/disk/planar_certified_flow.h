@@ -169,10 +169,7 @@ public:
   void bound(Flow_step& step)
   {
     planar_velocity(m_n, m_dofs, m_basis, m_d, m_vel);
-    const std::vector<Face>& F = m_P.faces;
-    step.critical = smallest_critical_step(F.size(), [&](std::size_t t, double) {
-      return critical_step_2(m_uv[F[t][0]], m_uv[F[t][1]], m_uv[F[t][2]], m_vel[F[t][0]], m_vel[F[t][1]], m_vel[F[t][2]]);
-    }, step.limiting);
+    step.critical = planar_critical_step(m_uv, m_P.faces, m_vel, step.limiting);
     step.lambda = certified_first_step(m_opt, m_newton, m_lambda_prev, step.critical);
   }
 
@@ -195,9 +192,7 @@ public:
   void commit(const Flow_step& step, Flow_outcome& out)
   {
     if(m_newton) m_eps = updated_regularization(m_eps, step.halvings);
-    for(std::size_t v = 0; v < m_n; ++v)
-      if(m_dofs.boundary_of[v] >= 0 && m_dofs.count[v] > 0)
-        m_curve.commit(std::size_t(m_dofs.boundary_of[v]), step.lambda * m_d[m_dofs.first[v]]);
+    commit_border_step(m_dofs, step.lambda, m_d, m_curve);
     m_uv.swap(m_trial);
     m_u.swap(m_u_trial);
     if(m_coupled && m_log_opening && m_E - m_E_trial < m_settings.log_opening_least_gain * (m_E - 2))
@@ -216,10 +211,7 @@ public:
 
   void finish(Flow_outcome& out)
   {
-    out.symbolic_analyses = m_sobolev.analyses() + m_newton_solver.analyses();
-    out.final_residual = residual();
-    out.domain_faces = m_P.faces;
-    out.domain_target = m_P.target;
+    set_final_domain(out, residual(), m_sobolev.analyses() + m_newton_solver.analyses(), m_P.faces, m_P.target);
   }
 
 private:

@@ -3,15 +3,18 @@
 //
 // The degrees of freedom of the planar flows (interior vertices move freely,
 // boundary vertices slide along the boundary curve or, floating, move freely), the trial move along a
-// dof direction, the vertex velocities, and the gradient of a per-face
-// energy with respect to the positions.
+// dof direction, the vertex velocities, the gradient of a per-face energy
+// with respect to the positions, and the paper's direction and critical
+// step on the plane.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_PLANAR_DOFS_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_PLANAR_DOFS_H
 
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/boundary_curve.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/cotangent_laplacian.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/critical_step.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/geometry.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow/flow_driver.h>
 
 #include <Eigen/Core>
 
@@ -140,6 +143,26 @@ inline bool potential_gradient_direction(const std::vector<Vec2>& uv, const std:
       moves = moves || d[a] != 0;
     }
   return moves;
+}
+
+/// After a step of length `lambda` along the dof direction `d`: each
+/// border vertex's place on `curve` moves by its dof (a fixed corner stays).
+inline void commit_border_step(const Planar_dofs& dofs, double lambda, const Eigen::VectorXd& d, Boundary_curve& curve)
+{
+  for(std::size_t v = 0; v < dofs.boundary_of.size(); ++v)
+    if(dofs.boundary_of[v] >= 0 && dofs.count[v] > 0)
+      curve.commit(std::size_t(dofs.boundary_of[v]), lambda * d[dofs.first[v]]);
+}
+
+/// The smallest critical step of the flowing faces `F` of `uv` at the
+/// vertex velocities `vel` (Eq. 5 with the corrected coefficients of
+/// Eq. 4); its face in `limiting`.
+inline double planar_critical_step(const std::vector<Vec2>& uv, const std::vector<Face>& F,
+                                   const std::vector<Vec2>& vel, int& limiting)
+{
+  return smallest_critical_step(F.size(), [&](std::size_t t, double) {
+    return critical_step_2(uv[F[t][0]], uv[F[t][1]], uv[F[t][2]], vel[F[t][0]], vel[F[t][1]], vel[F[t][2]]);
+  }, limiting);
 }
 
 } // namespace dlf

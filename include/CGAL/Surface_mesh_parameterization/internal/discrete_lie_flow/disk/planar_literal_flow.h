@@ -43,32 +43,30 @@ namespace dlf {
 /// return, `uv` is the last iterate (every flowing face positive) and the
 /// outcome holds its Delaunay triangulation.
 template <class EigenSolver>
-class Planar_literal_flow : public Flow_policy_base
+class Planar_literal_flow : public Literal_flow_base<EigenSolver>
 {
+  typedef Literal_flow_base<EigenSolver> Base;
+  using Base::m_n;
+  using Base::m_tri;
+  using Base::m_u;
+
 public:
   Planar_literal_flow(const Disk_problem& P, std::vector<Vec2>& uv, Boundary_curve& curve,
                       const Discrete_lie_flow_options& opt, EigenSolver& eigen_solver)
-    : Flow_policy_base(literal_stopping_rules(opt)), m_uv(uv), m_curve(curve), m_opt(opt), m_n(uv.size()),
-      m_dofs(uv.size(), P.boundary, curve), m_solver(eigen_solver), m_tri(P.faces),
-      m_targets(P.xyz, P.faces, P.target), m_target(P.target), m_basis(std::size_t(m_dofs.size))
-  {
-    // Step 1: h_M = f_*(ω_M), with the density on it (Eq. 6), once.
-    lump_on_vertices(m_n, P.faces, P.target, m_hM);
-  }
+    : Base(uv.size(), P.xyz, P.faces, P.target, opt, eigen_solver), m_uv(uv), m_curve(curve),
+      m_dofs(uv.size(), P.boundary, curve), m_basis(std::size_t(m_dofs.size))
+  {}
 
   bool start(Flow_outcome& out)
   {
     signed_areas_2(m_uv, m_tri.faces, m_u);
-    out.initial_d_area = d_area_of(m_u, m_target);
+    out.initial_d_area = this->d_area_now();
     double area = 0;
     for(double a : m_u) area += a;
     m_size = std::sqrt(area);
     after_move(out);
     return true;
   }
-
-  /// Step 8: ‖h_M − h_Ω‖² < ε on the current (flipped) iterate.
-  bool converged() const { return m_mismatch < m_opt.paper.residual_threshold; }
 
   /// Steps 3–5: L g = h_Ω − h_M with L the cotangent stiffness (L = −Δ;
   /// doc/paper_errata.md, "Sign"), g_0 = 0; ∇g per face, area-weighted at the
@@ -81,7 +79,7 @@ public:
       L = cotangent_stiffness(m_uv, m_tri.faces);
     }
     std::vector<double> g;
-    if(!solve_pinned_poisson(L, m_hO, m_hM, m_solver, out, g)) return Direction_status::SOLVER_FAILED;
+    if(!this->solve_potential(L, out, g)) return Direction_status::SOLVER_FAILED;
     Scoped_timer timer(out.seconds_step);
     if(!potential_gradient_direction(m_uv, m_tri.faces, m_u, g, m_dofs, m_curve, m_basis, m_d))
       return Direction_status::NO_DESCENT;
@@ -92,11 +90,8 @@ public:
   /// Step 6 (Eq. 5 with the corrected coefficients of Eq. 4).
   void bound(Flow_step& step)
   {
-    const std::vector<Face>& F = m_tri.faces;
-    step.critical = smallest_critical_step(F.size(), [&](std::size_t t, double) {
-      return critical_step_2(m_uv[F[t][0]], m_uv[F[t][1]], m_uv[F[t][2]], m_vel[F[t][0]], m_vel[F[t][1]], m_vel[F[t][2]]);
-    }, step.limiting);
-    step.lambda = literal_step(m_opt, step.critical);
+    step.critical = planar_critical_step(m_uv, m_tri.faces, m_vel, step.limiting);
+    step.lambda = this->step_of(step.critical);
   }
 
   /// Step 7, or the documented failure: the step is taken as it is, and
@@ -111,66 +106,35 @@ public:
     for(std::size_t v = 0; v < m_n; ++v)
       moved = (std::max)(moved, (std::max)(std::abs(m_trial[v][0] - m_uv[v][0]), std::abs(m_trial[v][1] - m_uv[v][1])));
     if(!(moved > literal_least_motion * m_size)) return;
-    const Orientation_count oc = count_orientations_2(m_trial, m_tri.faces);
-    if(!oc.all_positive()) {
-      ++out.rejected_by_exact_check;
-      out.collapse_faces = oc.inverted + oc.degenerate;
-      return;
-    }
+    if(!Base::certify_trial(count_orientations_2(m_trial, m_tri.faces), out)) return;
     step.collapsed = false;
     step.accepted = true;
   }
 
   void commit(Flow_step& step, Flow_outcome& out)
   {
-    for(std::size_t v = 0; v < m_n; ++v)
-      if(m_dofs.boundary_of[v] >= 0 && m_dofs.count[v] > 0)
-        m_curve.commit(std::size_t(m_dofs.boundary_of[v]), step.lambda * m_d[m_dofs.first[v]]);
+    commit_border_step(m_dofs, step.lambda, m_d, m_curve);
     m_uv.swap(m_trial);
     step.flips = after_move(out);
-  }
-
-  double d_area() const { return m_d_area; }
-  double progress() const { return m_d_area; }
-  double residual() const { return area_residual(m_n, m_tri.faces, m_u, m_target); }
-  /// ‖h_M − h_Ω‖² of the current iterate (the stop rule's value).
-  double mismatch() const { return m_mismatch; }
-
-  void finish(Flow_outcome& out)
-  {
-    out.final_d_area = m_d_area;
-    out.final_residual = residual();
-    out.symbolic_analyses = m_solver.analyses();
-    out.domain_faces = m_tri.faces;
-    out.domain_target = m_target;
   }
 
 private:
   /// Step 2 and the measures of the new iterate; the number of flips.
   std::size_t after_move(Flow_outcome& out)
   {
-    const std::size_t flips = m_tri.make_delaunay(m_uv, [&](int f) {
-      m_target[std::size_t(f)] = m_targets(m_tri.faces[std::size_t(f)]); }, 100 * m_tri.faces.size() + 100);
+    const std::size_t flips = m_tri.make_delaunay(m_uv, [this](int f) { this->retarget(f); }, this->most_flips());
     out.flips += flips;
     signed_areas_2(m_uv, m_tri.faces, m_u);
-    m_d_area = d_area_of(m_u, m_target);
-    lump_on_vertices(m_n, m_tri.faces, m_u, m_hO);
-    m_mismatch = normalized_mismatch(m_hO, m_hM);
+    this->measure();
     return flips;
   }
 
   std::vector<Vec2>& m_uv;
   Boundary_curve& m_curve;
-  const Discrete_lie_flow_options& m_opt;
-  const std::size_t m_n;
   Planar_dofs m_dofs;
-  Pattern_reusing_solver<EigenSolver> m_solver;
-  Flip_triangulation m_tri;
-  const Flowing_targets m_targets;
-  std::vector<double> m_target, m_hM, m_hO, m_u;
   std::vector<Vec2> m_basis, m_vel, m_trial;
   Eigen::VectorXd m_d;
-  double m_d_area = 0, m_mismatch = 0, m_size = 1;
+  double m_size = 1;
 };
 
 } // namespace dlf

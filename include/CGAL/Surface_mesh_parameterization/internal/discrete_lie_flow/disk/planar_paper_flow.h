@@ -195,10 +195,7 @@ public:
 
   void bound(Flow_step& step)
   {
-    const std::vector<Face>& F = m_tri.faces;
-    step.critical = smallest_critical_step(F.size(), [&](std::size_t t, double) {
-      return critical_step_2(m_uv[F[t][0]], m_uv[F[t][1]], m_uv[F[t][2]], m_vel[F[t][0]], m_vel[F[t][1]], m_vel[F[t][2]]);
-    }, step.limiting);
+    step.critical = planar_critical_step(m_uv, m_tri.faces, m_vel, step.limiting);
     step.lambda = paper_first_step(m_opt, step.critical);
   }
 
@@ -219,9 +216,7 @@ public:
 
   void commit(Flow_step& step, Flow_outcome& out)
   {
-    for(std::size_t v = 0; v < m_n; ++v)
-      if(m_dofs.boundary_of[v] >= 0 && m_dofs.count[v] > 0)
-        m_curve.commit(std::size_t(m_dofs.boundary_of[v]), step.lambda * m_d[m_dofs.first[v]]);
+    commit_border_step(m_dofs, step.lambda, m_d, m_curve);
     m_uv.swap(m_trial);
     step.flips = make_delaunay(out);
     signed_areas_2(m_uv, m_tri.faces, m_u);
@@ -238,10 +233,8 @@ public:
     m_uv = m_best_uv;
     signed_areas_2(m_uv, m_best_faces, m_u);
     out.final_d_area = d_area_of(m_u, m_best_target);
-    out.final_residual = area_residual(m_n, m_best_faces, m_u, m_best_target);
-    out.symbolic_analyses = m_solver.analyses();
-    out.domain_faces = m_best_faces;
-    out.domain_target = m_best_target;
+    set_final_domain(out, area_residual(m_n, m_best_faces, m_u, m_best_target), m_solver.analyses(), m_best_faces,
+                     m_best_target);
   }
 
 private:

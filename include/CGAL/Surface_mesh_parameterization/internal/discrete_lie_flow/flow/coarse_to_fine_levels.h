@@ -3,13 +3,17 @@
 //
 // What the disk's and the sphere's coarse-to-fine starts share
 // (disk/coarse_to_fine.h, sphere/sphere_coarse_to_fine.h): their settings,
-// the fallback position of a vertex put back into its ring (the centroid of
-// the ring's kernel) and the schedule of the vertex sweeps on a finer level.
+// the coarsest level's own numbering, options and record, the fallback
+// position of a vertex put back into its ring (the centroid of the ring's
+// kernel) and the schedule of the vertex sweeps on a finer level.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_COARSE_TO_FINE_LEVELS_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_COARSE_TO_FINE_LEVELS_H
 
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_options.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/vertex_relaxation.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow/flow_driver.h>
 
 #include <vector>
 
@@ -48,6 +52,51 @@ struct Coarse_to_fine_settings
   /// so that the map does not depend on the number of threads.
   std::size_t sweep_parts = 8;
 };
+
+/// The coarsest level on vertices of its own: its `faces` (over the
+/// caller's numbering) renumbered in place, in the order they first use
+/// their vertices; `xyz` gets those vertices' points from `fine_xyz`,
+/// `index[v]` is a caller's vertex's coarse number (−1 off the level) and
+/// `vertex_of[i]` the caller's vertex of coarse vertex i.
+inline void renumber_coarsest_level(std::vector<Face>& faces, const std::vector<Vec3>& fine_xyz,
+                                    std::vector<Vec3>& xyz, std::vector<int>& index, std::vector<int>& vertex_of)
+{
+  index.assign(fine_xyz.size(), -1);
+  for(Face& f : faces)
+    for(int& v : f) {
+      if(index[std::size_t(v)] < 0) {
+        index[std::size_t(v)] = int(vertex_of.size());
+        vertex_of.push_back(v);
+        xyz.push_back(fine_xyz[std::size_t(v)]);
+      }
+      v = index[std::size_t(v)];
+    }
+}
+
+/// The coarsest level's flow options: the caller's `opt` without callback
+/// or history, to `coarse_tolerance_share` of its tolerance, and no test of
+/// the density's shares (the finest level's faces hold its regions).
+inline Discrete_lie_flow_options coarsest_level_options(const Discrete_lie_flow_options& opt,
+                                                        const Coarse_to_fine_settings& s)
+{
+  Discrete_lie_flow_options coarse = opt;
+  coarse.callback = nullptr;
+  coarse.record_history = false;
+  coarse.tolerance = opt.tolerance * s.coarse_tolerance_share;
+  coarse.certified.share_tolerance = 0;
+  return coarse;
+}
+
+/// The report's record of the coarsest level's flow.
+inline Discrete_lie_flow_level coarsest_level_record(std::size_t vertices, std::size_t faces, const Flow_outcome& flowed)
+{
+  Discrete_lie_flow_level level;
+  level.vertices = vertices;
+  level.faces = faces;
+  level.iterations = flowed.iterations;
+  level.d_area = flowed.final_d_area;
+  return level;
+}
 
 /// The centroid of the kernel of the counterclockwise polygon `ring` (the
 /// polygon clipped by each of its edges' half-planes): where a vertex put

@@ -49,6 +49,18 @@ struct Flow_outcome
   std::vector<double> domain_target;
 };
 
+/// What a surface policy's finish() hands the outcome: the final residual,
+/// its solvers' symbolic analyses, and the triangulation it ended on (the
+/// caller's, or the flipped one) with the targets it used there.
+inline void set_final_domain(Flow_outcome& out, double residual, std::size_t analyses, const std::vector<Face>& faces,
+                             const std::vector<double>& target)
+{
+  out.final_residual = residual;
+  out.symbolic_analyses = analyses;
+  out.domain_faces = faces;
+  out.domain_target = target;
+}
+
 /// Adds the time spent in its scope to a counter of the outcome.
 class Scoped_timer
 {

@@ -370,10 +370,7 @@ public:
 
   void finish(Flow_outcome& out)
   {
-    out.symbolic_analyses = m_solver.analyses() + m_newton_solver.analyses();
-    out.final_residual = residual();
-    out.domain_faces = m_P.faces;
-    out.domain_target = m_P.target;
+    set_final_domain(out, residual(), m_solver.analyses() + m_newton_solver.analyses(), m_P.faces, m_P.target);
   }
 
 private:

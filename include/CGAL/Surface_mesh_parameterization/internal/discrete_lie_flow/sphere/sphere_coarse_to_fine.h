@@ -181,36 +181,21 @@ bool flow_coarsest_sphere_level(const Sphere_problem& P, const Collapse_level& L
                                 Discrete_lie_flow_level& level)
 {
   Sphere_problem C;
-  std::vector<int> index(P.xyz.size(), -1), vertex_of;
+  std::vector<int> index, vertex_of;
   C.faces = L.faces;
   C.target = L.target;
-  for(Face& f : C.faces)
-    for(int& v : f) {
-      if(index[std::size_t(v)] < 0) {
-        index[std::size_t(v)] = int(vertex_of.size());
-        vertex_of.push_back(v);
-        C.xyz.push_back(P.xyz[std::size_t(v)]);
-      }
-      v = index[std::size_t(v)];
-    }
+  renumber_coarsest_level(C.faces, P.xyz, C.xyz, index, vertex_of);
   std::vector<Vec3> q;
   const Sphere_initial_outcome init = certified_sphere_initial_map<EigenSolver>(
     C, q, false, 3, true, false, true, opt.sphere.start == Discrete_lie_flow_sphere_start::MEAN_VALUE);
   if(!init.certified) return false;
-  Discrete_lie_flow_options coarse = opt;
-  coarse.callback = nullptr;
-  coarse.record_history = false;
-  coarse.tolerance = opt.tolerance * s.coarse_tolerance_share;
-  coarse.certified.share_tolerance = 0; // the finest level's faces hold the density's regions
+  const Discrete_lie_flow_options coarse = coarsest_level_options(opt, s);
   EigenSolver solver;
   Sphere_certified_flow<EigenSolver> flow(C, q, coarse, solver, Sphere_flow_settings());
   const Flow_outcome flowed = run_flow(flow, coarse);
   if(flowed.stop_reason == Discrete_lie_flow_stop_reason::STALLED || flowed.solver_failed) return false;
   for(std::size_t i = 0; i < vertex_of.size(); ++i) fine[std::size_t(vertex_of[i])] = q[i];
-  level.vertices = vertex_of.size();
-  level.faces = C.faces.size();
-  level.iterations = flowed.iterations;
-  level.d_area = flowed.final_d_area;
+  level = coarsest_level_record(vertex_of.size(), C.faces.size(), flowed);
   return true;
 }
 

@@ -41,26 +41,26 @@ namespace dlf {
 /// λ̃_t the exact root of the orientation cubic (doc/paper_errata.md,
 /// "Sphere"). On return, `p` is the last iterate.
 template <class EigenSolver>
-class Sphere_literal_flow : public Flow_policy_base
+class Sphere_literal_flow : public Literal_flow_base<EigenSolver>
 {
+  typedef Literal_flow_base<EigenSolver> Base;
+  using Base::m_n;
+  using Base::m_tri;
+  using Base::m_u;
+
 public:
   Sphere_literal_flow(const Sphere_problem& P, std::vector<Vec3>& p, const Discrete_lie_flow_options& opt,
                       EigenSolver& eigen_solver)
-    : Flow_policy_base(literal_stopping_rules(opt)), m_p(p), m_opt(opt), m_n(p.size()), m_solver(eigen_solver),
-      m_tri(P.faces), m_targets(P.xyz, P.faces, P.target), m_target(P.target), m_d(p.size())
-  {
-    lump_on_vertices(m_n, P.faces, P.target, m_hM);
-  }
+    : Base(p.size(), P.xyz, P.faces, P.target, opt, eigen_solver), m_p(p), m_d(p.size())
+  {}
 
   bool start(Flow_outcome& out)
   {
     signed_areas_sphere(m_p, m_tri.faces, m_u);
-    out.initial_d_area = d_area_of(m_u, m_target);
+    out.initial_d_area = this->d_area_now();
     after_move(out);
     return true;
   }
-
-  bool converged() const { return m_mismatch < m_opt.paper.residual_threshold; }
 
   Direction_status direction(Flow_outcome& out)
   {
@@ -70,7 +70,7 @@ public:
       L = sphere_sobolev_matrix(m_p, m_tri.faces, 0.);
     }
     std::vector<double> g;
-    if(!solve_pinned_poisson(L, m_hO, m_hM, m_solver, out, g)) return Direction_status::SOLVER_FAILED;
+    if(!this->solve_potential(L, out, g)) return Direction_status::SOLVER_FAILED;
     Scoped_timer timer(out.seconds_step);
     std::vector<double> wsum(m_n, 0.);
     std::fill(m_d.begin(), m_d.end(), Vec3{{ 0, 0, 0 }});
@@ -98,7 +98,7 @@ public:
       const std::size_t a = std::size_t(F[t][0]), b = std::size_t(F[t][1]), c = std::size_t(F[t][2]);
       return critical_step_sphere(m_p[a], m_p[b], m_p[c], m_d[a], m_d[b], m_d[c]);
     }, step.limiting);
-    step.lambda = literal_step(m_opt, step.critical);
+    step.lambda = this->step_of(step.critical);
   }
 
   void search(Flow_step& step, Flow_outcome& out)
@@ -113,12 +113,7 @@ public:
       for(int j = 0; j < 3; ++j) moved = (std::max)(moved, std::abs(m_trial[v][j] - m_p[v][j]));
     }
     if(!(moved > literal_least_motion)) return;
-    const Orientation_count oc = count_orientations_sphere(m_trial, m_tri.faces);
-    if(!oc.all_positive()) {
-      ++out.rejected_by_exact_check;
-      out.collapse_faces = oc.inverted + oc.degenerate;
-      return;
-    }
+    if(!Base::certify_trial(count_orientations_sphere(m_trial, m_tri.faces), out)) return;
     step.collapsed = false;
     step.accepted = true;
   }
@@ -129,43 +124,20 @@ public:
     step.flips = after_move(out);
   }
 
-  double d_area() const { return m_d_area; }
-  double progress() const { return m_d_area; }
-  double residual() const { return area_residual(m_n, m_tri.faces, m_u, m_target); }
-  double mismatch() const { return m_mismatch; }
   std::size_t non_delaunay_edges() const { return count_non_delaunay_edges_sphere(m_tri, m_p); }
-
-  void finish(Flow_outcome& out)
-  {
-    out.final_d_area = m_d_area;
-    out.final_residual = residual();
-    out.symbolic_analyses = m_solver.analyses();
-    out.domain_faces = m_tri.faces;
-    out.domain_target = m_target;
-  }
 
 private:
   std::size_t after_move(Flow_outcome& out)
   {
-    const std::size_t flips = make_delaunay_sphere(m_tri, m_p, [&](int f) {
-      m_target[std::size_t(f)] = m_targets(m_tri.faces[std::size_t(f)]); }, 100 * m_tri.faces.size() + 100);
+    const std::size_t flips = make_delaunay_sphere(m_tri, m_p, [this](int f) { this->retarget(f); }, this->most_flips());
     out.flips += flips;
     signed_areas_sphere(m_p, m_tri.faces, m_u);
-    m_d_area = d_area_of(m_u, m_target);
-    lump_on_vertices(m_n, m_tri.faces, m_u, m_hO);
-    m_mismatch = normalized_mismatch(m_hO, m_hM);
+    this->measure();
     return flips;
   }
 
   std::vector<Vec3>& m_p;
-  const Discrete_lie_flow_options& m_opt;
-  const std::size_t m_n;
-  Pattern_reusing_solver<EigenSolver> m_solver;
-  Flip_triangulation m_tri;
-  const Flowing_targets m_targets;
-  std::vector<double> m_target, m_hM, m_hO, m_u;
   std::vector<Vec3> m_d, m_trial;
-  double m_d_area = 0, m_mismatch = 0;
 };
 
 } // namespace dlf

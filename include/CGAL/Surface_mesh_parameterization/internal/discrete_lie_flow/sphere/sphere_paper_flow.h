@@ -165,10 +165,8 @@ public:
     m_non_delaunay_edges = count_non_delaunay_edges_sphere(m_best_tri, m_p);
     signed_areas_sphere(m_p, m_best_tri.faces, m_u);
     out.final_d_area = d_area_of(m_u, m_best_target);
-    out.final_residual = area_residual(m_n, m_best_tri.faces, m_u, m_best_target);
-    out.symbolic_analyses = m_solver.analyses();
-    out.domain_faces = m_best_tri.faces;
-    out.domain_target = m_best_target;
+    set_final_domain(out, area_residual(m_n, m_best_tri.faces, m_u, m_best_target), m_solver.analyses(),
+                     m_best_tri.faces, m_best_target);
   }
 
   std::size_t non_delaunay_edges() const { return m_non_delaunay_edges; }

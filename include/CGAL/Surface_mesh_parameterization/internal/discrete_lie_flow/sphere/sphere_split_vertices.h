@@ -61,6 +61,60 @@ struct Split_vertex_coarsening
   std::vector<Split_vertex> removed;  ///< in removal order (prolongation goes backwards)
 };
 
+/// The ring of the degree-4 vertex `v` from its four faces `inc`,
+/// counter-clockwise (face (v, x, y) links x to y): `face_of[r]` is the face
+/// (v, ring[r], ring[r + 1]). False when the faces do not close one ring of
+/// four distinct vertices.
+inline bool degree_four_ring(const std::vector<Face>& faces, const std::vector<int>& inc, int v,
+                             std::array<int, 4>& ring, std::array<int, 4>& face_of)
+{
+  std::array<int, 4> x, y;
+  for(std::size_t i = 0; i < 4; ++i) {
+    const Face& t = faces[std::size_t(inc[i])];
+    const int k = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+    x[i] = t[(k + 1) % 3];
+    y[i] = t[(k + 2) % 3];
+  }
+  ring[0] = x[0];
+  face_of[0] = inc[0];
+  for(std::size_t r = 1; r < 4; ++r) {
+    const std::size_t i = std::size_t(std::find(x.begin(), x.end(), ring[r - 1]) - x.begin());
+    if(i == 4) return false;
+    ring[r] = y[i];
+    const std::size_t j = std::size_t(std::find(x.begin(), x.end(), ring[r]) - x.begin());
+    if(j == 4) return false;
+    face_of[r] = inc[j];
+  }
+  if(y[std::size_t(std::find(x.begin(), x.end(), ring[3]) - x.begin())] != ring[0]) return false;
+  for(std::size_t i = 0; i < 4; ++i)
+    for(std::size_t j = i + 1; j < 4; ++j)
+      if(ring[i] == ring[j]) return false;
+  return true;
+}
+
+/// The coarse problem left by the removals: the vertices of `P` not
+/// `removed`, renumbered (`out.coarse_index`), and the `alive` faces with
+/// their targets.
+inline void coarse_split_problem(const Sphere_problem& P, const std::vector<Face>& faces,
+                                 const std::vector<double>& target, const std::vector<char>& alive,
+                                 const std::vector<char>& removed, Split_vertex_coarsening& out)
+{
+  out.coarse_index.assign(P.xyz.size(), -1);
+  int m = 0;
+  for(std::size_t v = 0; v < P.xyz.size(); ++v)
+    if(!removed[v]) {
+      out.coarse_index[v] = m++;
+      out.coarse.xyz.push_back(P.xyz[v]);
+    }
+  for(std::size_t f = 0; f < faces.size(); ++f)
+    if(alive[f]) {
+      const Face& t = faces[f];
+      out.coarse.faces.push_back(Face{{ out.coarse_index[std::size_t(t[0])], out.coarse_index[std::size_t(t[1])],
+                                        out.coarse_index[std::size_t(t[2])] }});
+      out.coarse.target.push_back(target[f]);
+    }
+}
+
 /// Removes edge-split vertices of `P` (targets filled) while there are any:
 /// degree 4, the two spokes to one pair of opposite neighbours at an angle
 /// within `sin_tolerance` (its sine) of π, and those two neighbours not
@@ -82,29 +136,8 @@ inline Split_vertex_coarsening coarsen_split_vertices(const Sphere_problem& P,
     std::vector<int>& inc = incident[std::size_t(v)];
     inc.erase(std::remove_if(inc.begin(), inc.end(), [&alive](int f) { return !alive[std::size_t(f)]; }), inc.end());
     if(inc.size() != 4) return false;
-    // The ring around v, counter-clockwise: face (v, x, y) links x to y.
-    std::array<int, 4> x, y, face_of;
-    for(std::size_t i = 0; i < 4; ++i) {
-      const Face& t = faces[std::size_t(inc[i])];
-      const int k = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
-      x[i] = t[(k + 1) % 3];
-      y[i] = t[(k + 2) % 3];
-    }
-    std::array<int, 4> ring;
-    ring[0] = x[0];
-    face_of[0] = inc[0];
-    for(std::size_t r = 1; r < 4; ++r) {
-      const std::size_t i = std::size_t(std::find(x.begin(), x.end(), ring[r - 1]) - x.begin());
-      if(i == 4) return false;
-      ring[r] = y[i];
-      const std::size_t j = std::size_t(std::find(x.begin(), x.end(), ring[r]) - x.begin());
-      if(j == 4) return false;
-      face_of[r] = inc[j];
-    }
-    if(y[std::size_t(std::find(x.begin(), x.end(), ring[3]) - x.begin())] != ring[0]) return false;
-    for(std::size_t i = 0; i < 4; ++i)
-      for(std::size_t j = i + 1; j < 4; ++j)
-        if(ring[i] == ring[j]) return false;
+    std::array<int, 4> ring, face_of;
+    if(!degree_four_ring(faces, inc, v, ring, face_of)) return false;
     // face_of[r] is (v, ring[r], ring[r + 1]). Which opposite pair is straight?
     const Vec3& pv = P.xyz[std::size_t(v)];
     auto straight = [&](int a, int b) {
@@ -156,20 +189,7 @@ inline Split_vertex_coarsening coarsen_split_vertices(const Sphere_problem& P,
       if(alive[std::size_t(f)])
         for(int k = 0; k < 3; ++k) queue.push_back(faces[std::size_t(f)][k]);
   }
-  out.coarse_index.assign(n, -1);
-  int m = 0;
-  for(std::size_t v = 0; v < n; ++v)
-    if(!removed[v]) {
-      out.coarse_index[v] = m++;
-      out.coarse.xyz.push_back(P.xyz[v]);
-    }
-  for(std::size_t f = 0; f < faces.size(); ++f)
-    if(alive[f]) {
-      const Face& t = faces[f];
-      out.coarse.faces.push_back(Face{{ out.coarse_index[std::size_t(t[0])], out.coarse_index[std::size_t(t[1])],
-                                        out.coarse_index[std::size_t(t[2])] }});
-      out.coarse.target.push_back(target[f]);
-    }
+  coarse_split_problem(P, faces, target, alive, removed, out);
   return out;
 }
 

@@ -15,6 +15,7 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DLF_VOLUME_FLOW_H
 
 #include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_report.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_lie_flow_volume_options.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/certification.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/flow/flow_driver.h>
@@ -47,55 +48,32 @@ namespace dlf {
 /// One iteration of a volumetric flow, as callbacks and histories see it.
 typedef Discrete_lie_flow_volume_iteration Volume_iteration;
 
-/// Settings of one run of the engine.
-struct Volume_flow_settings
+/// The density levels a flow holds to their shares besides D_vol
+/// (set_volume_levels(), volume_run.h): the level (0, 1, ...) of every tet
+/// (empty: none) and every level's prescribed share of the volume.
+struct Volume_share_levels
 {
-  double tolerance = 0.01;         ///< stop when D_vol − 2 ≤ tolerance
-  std::size_t max_iterations = 1000;
-  double mu = 0.8;                 ///< fraction of the critical step
-  std::size_t cg_max_iterations = 200;
-  double cg_tolerance = 1e-3;      ///< relative residual of the inexact Gauss–Newton solve
-  double plateau = 1e-4;           ///< stop when (E_prev − E)/(E − 2) stays below this ...
-  std::size_t plateau_window = 8;  ///< ... for this many iterations in a row (`Flow_stopping::plateau_in_a_row()`)
-  /// Keep every border triangle positive seen from the centre (a
-  /// star-shaped border: with positive tets, a certificate of bijectivity).
-  bool star_shaped_border = true;
-  /// The conjugate gradients' preconditioner: a sparse Cholesky
-  /// factorisation of the Gauss–Newton matrix, refreshed every this many
-  /// iterations (0: block Jacobi, the 3 × 3 blocks of every vertex).
-  std::size_t cholesky_every = 0;
-  /// Inexact Newton: the conjugate gradients' relative tolerance follows
-  /// Eisenstat and Walker's second forcing term (loose far from the
-  /// minimum, down to `cg_tolerance` near it) instead of staying at
-  /// `cg_tolerance`.
-  bool cg_forcing = true;
-  double cg_forcing_max = 0.5;     ///< the forcing term's upper bound
-  /// Two-level preconditioner: besides the 3 × 3 blocks, a coarse
-  /// correction on aggregates of this many consecutive vertices (in the
-  /// flow's Morton order, so spatially compact), every aggregate moving by
-  /// one translation; its Gauss–Newton matrix is factorised every solve
-  /// (0: blocks alone).
-  std::size_t coarse_aggregate = 64;
-  /// Threads of the per-tet and per-vertex passes (0: automatic,
-  /// volume_flow_threads()); the result does not depend on it.
-  int threads = 0;
-  /// Paper mode: the collapse guard (volume_paper_flow.h); false: the
-  /// paper's step as written.
-  bool paper_collapse_guard = true;
-  std::function<bool(const Volume_iteration&)> callback; ///< false: stop (INTERRUPTED)
-  /// Measure control: the level (0, 1, ...) of every tet (empty: none);
-  /// converged also needs every level's share of the volume within
-  /// `share_tolerance` of its prescribed share, relative.
   std::vector<int> level;
-  std::vector<double> level_share; ///< the prescribed share of every level
-  double share_tolerance = 0.005;
+  std::vector<double> share;
 };
+
+// The flows' fixed settings, not options: the relative residual of the
+// inexact Gauss–Newton solve (the floor of the forcing term, the whole
+// tolerance without it), the forcing term's upper bound, and the plateau
+// rule: stop when (E_prev − E)/(E − 2) stays below `volume_plateau` for
+// `volume_plateau_window` iterations in a row (`Flow_stopping::plateau_in_a_row()`).
+const double volume_cg_tolerance = 1e-3;
+const double volume_cg_forcing_max = 0.5;
+const double volume_plateau = 1e-4;
+const std::size_t volume_plateau_window = 8;
 
 /// The largest relative error of the levels' shares, |achieved/prescribed − 1|;
 /// `achieved` receives the achieved shares.
-inline double level_share_error(const std::vector<int>& level, const std::vector<double>& prescribed,
-                                const std::vector<double>& u, std::vector<double>* achieved = nullptr)
+inline double level_share_error(const Volume_share_levels& levels, const std::vector<double>& u,
+                                std::vector<double>* achieved = nullptr)
 {
+  const std::vector<int>& level = levels.level;
+  const std::vector<double>& prescribed = levels.share;
   if(level.empty()) return 0;
   std::vector<double> a(prescribed.size(), 0.);
   double A = 0;
@@ -110,19 +88,19 @@ inline double level_share_error(const std::vector<int>& level, const std::vector
 }
 
 /// The driver's options of a volumetric flow, the same for both policies:
-/// the settings' cap and μ, and a callback that turns the driver's record
-/// into the volumetric one for `history` and the settings' callback.
+/// the options' cap and μ, and a callback that turns the driver's record
+/// into the volumetric one for `history` and the options' callback.
 /// `tet_of(face)`: the caller's tet of the driver's limiting face (−1 for
 /// none); `cg_of()`: the iteration's conjugate-gradient steps.
 template <class TetOf, class CgOf>
-Discrete_lie_flow_options volume_driver_options(const Volume_flow_settings& S, std::vector<Volume_iteration>* history,
-                                                TetOf tet_of, CgOf cg_of)
+Discrete_lie_flow_options volume_driver_options(const Discrete_lie_flow_volume_options& O,
+                                                std::vector<Volume_iteration>* history, TetOf tet_of, CgOf cg_of)
 {
   Discrete_lie_flow_options opt;
-  opt.max_iterations = S.max_iterations;
-  opt.mu = S.mu;
-  if(history || S.callback)
-    opt.callback = [&S, history, tet_of, cg_of](const Discrete_lie_flow_iteration& info) {
+  opt.max_iterations = O.max_iterations;
+  opt.mu = O.mu;
+  if(history || O.callback)
+    opt.callback = [&O, history, tet_of, cg_of](const Discrete_lie_flow_iteration& info) {
       Volume_iteration I;
       I.iteration = info.iteration;
       I.step = info.step;
@@ -132,7 +110,7 @@ Discrete_lie_flow_options volume_driver_options(const Volume_flow_settings& S, s
       I.cg_iterations = cg_of();
       I.seconds = info.seconds;
       if(history) history->push_back(I);
-      return !(S.callback && !S.callback(I));
+      return !(O.callback && !O.callback(I));
     };
   return opt;
 }
@@ -146,6 +124,21 @@ struct Volume_flow_outcome
   std::size_t cg_iterations = 0;
   double energy = 0;
 };
+
+/// Runs the volumetric policy `flow` by `run_flow()`: the driver's counts,
+/// the policy's conjugate-gradient steps and final D_vol.
+template <class Policy>
+Volume_flow_outcome run_volume_policy(Policy& flow, const Discrete_lie_flow_options& opt)
+{
+  const Flow_outcome o = run_flow(flow, opt);
+  Volume_flow_outcome out;
+  out.stop_reason = o.stop_reason;
+  out.iterations = o.iterations;
+  out.rejected_by_exact_check = o.rejected_by_exact_check;
+  out.cg_iterations = flow.cg_iterations();
+  out.energy = flow.energy();
+  return out;
+}
 
 /// The energy E = 1 + U Σ_t c_t / χ(u_t), c_t = (target_t / Σ target)², U = Σ u_t;
 /// with χ(u) = u it is D_vol = Σ w_t (r_t + 1/r_t), w_t = target_t / Σ target,
@@ -201,17 +194,22 @@ private:
 /// The certified volumetric flow as a policy of `run_flow()` (flow_driver.h;
 /// doc/design.md, "The flow driver"). `x` (every tet positive by the exact
 /// predicate, border points on the unit sphere) is moved in place;
-/// `sum_order` orders the energy's sums (Volume_energy).
+/// `sum_order` orders the energy's sums (Volume_energy). Of the options it
+/// reads the tolerances, μ, the conjugate gradients' settings,
+/// `cholesky_every`, `threads` and `star_shaped_border` (the cap and the
+/// callback through volume_driver_options()); the rest is the run's.
 class Volume_certified_flow : public Flow_policy_base
 {
 public:
   Volume_certified_flow(std::vector<Vec3>& x, const std::vector<Tet>& tets, const std::vector<char>& on_border,
                         const std::vector<std::array<int, 3> >& border_faces, const std::vector<double>& target,
-                        const Volume_flow_settings& S, std::vector<int> sum_order = std::vector<int>())
-    : Flow_policy_base(Flow_stopping::plateau_in_a_row(S.plateau_window, S.plateau)), m_x(x), m_tets(tets), m_on_border(on_border), m_border_faces(border_faces), m_S(S),
+                        const Discrete_lie_flow_volume_options& O, const Volume_share_levels& levels,
+                        std::vector<int> sum_order = std::vector<int>())
+    : Flow_policy_base(Flow_stopping::plateau_in_a_row(volume_plateau_window, volume_plateau)), m_x(x), m_tets(tets),
+      m_on_border(on_border), m_border_faces(border_faces), m_O(O), m_levels(levels),
       m_energy(target, std::move(sum_order)),
       m_dofs(on_border, false), m_grad(tets.size()), m_gv(x.size()), m_x_trial(x.size()), m_M(x.size()),
-      m_threads(volume_flow_threads(S.threads, tets.size())), m_coarse(S.coarse_aggregate)
+      m_threads(volume_flow_threads(O.threads, tets.size())), m_coarse(O.coarse_aggregate)
   {
     // Every vertex's corners (4t + j), in increasing t: the per-vertex sums
     // then add the tets' terms in one order whatever the number of threads.
@@ -261,7 +259,7 @@ public:
 
   bool converged() const
   {
-    return m_E - 2 <= m_S.tolerance && level_share_error(m_S.level, m_S.level_share, m_u) <= m_S.share_tolerance;
+    return m_E - 2 <= m_O.tolerance && level_share_error(m_levels, m_u) <= m_O.share_tolerance;
   }
 
   /// The gradient and the Gauss–Newton blocks, then the inexact solve.
@@ -271,7 +269,7 @@ public:
       Scoped_timer timer(out.seconds_assembly);
       assemble();
     }
-    if(m_S.cg_forcing) forcing();
+    if(m_O.cg_forcing) forcing();
     Scoped_timer timer(out.seconds_solve);
     solve();
     return Direction_status::DESCENT;
@@ -304,7 +302,7 @@ public:
       if(range_crit[r] < crit) { crit = range_crit[r]; limiting = range_limiting[r]; }
     // Re-normalising the points scales them by positive factors: the sign
     // of det[a, b, c] is kept.
-    if(m_S.star_shaped_border)
+    if(m_O.star_shaped_border)
       for(const auto& f : m_border_faces) {
         const std::size_t a = std::size_t(f[0]), b = std::size_t(f[1]), c = std::size_t(f[2]);
         crit = (std::min)(crit, critical_step_sphere(m_x[a], m_x[b], m_x[c], m_d[a], m_d[b], m_d[c]));
@@ -313,7 +311,7 @@ public:
     for(const Vec3& e : m_d) dmax = (std::max)(dmax, norm3(e));
     step.critical = crit;
     step.limiting = limiting;
-    step.lambda = (std::min)((std::min)(1., m_S.mu * crit), dmax > 0 ? 0.1 / dmax : 1.);
+    step.lambda = (std::min)((std::min)(1., m_O.mu * crit), dmax > 0 ? 0.1 / dmax : 1.);
   }
 
   /// Halves the step until the energy drops and the exact predicate finds
@@ -335,7 +333,7 @@ public:
         m_E_trial = m_energy.value(m_u_trial, 0);
         if(!(m_E_trial < m_E)) continue;
         if(take_forced_trial_refusal() || !all_positive(m_x_trial) ||
-           (m_S.star_shaped_border && count_bad_border_faces(m_x_trial, m_border_faces) != 0)) {
+           (m_O.star_shaped_border && count_bad_border_faces(m_x_trial, m_border_faces) != 0)) {
           ++out.rejected_by_exact_check;
           continue;
         }
@@ -495,7 +493,7 @@ private:
   }
 
   /// Eisenstat and Walker's choice 2 (γ = 0.9, α = 2) with its safeguard,
-  /// between cg_tolerance and 0.5.
+  /// between volume_cg_tolerance and volume_cg_forcing_max.
   void forcing()
   {
     const double g = m_g.norm();
@@ -503,9 +501,9 @@ private:
       double eta = 0.9 * (g / m_g_prev) * (g / m_g_prev);
       const double safe = 0.9 * m_eta * m_eta;
       if(safe > 0.1) eta = (std::max)(eta, safe);
-      m_eta = (std::min)((std::max)(eta, m_S.cg_tolerance), m_S.cg_forcing_max);
+      m_eta = (std::min)((std::max)(eta, volume_cg_tolerance), volume_cg_forcing_max);
     } else {
-      m_eta = (std::min)(0.5, m_S.cg_forcing_max);
+      m_eta = volume_cg_forcing_max;
     }
     m_g_prev = g;
   }
@@ -515,8 +513,8 @@ private:
   void solve()
   {
     m_dofs.block_inverse(m_M, m_lambda, m_Minv);
-    if(m_S.cholesky_every > 0 && (m_pass - m_factor_pass >= m_S.cholesky_every || !m_factored)) factorize();
-    if(m_S.coarse_aggregate > 0 && !m_factored) m_coarse.factorize(m_tets, m_dofs, m_grad, m_w, m_M, m_lambda);
+    if(m_O.cholesky_every > 0 && (m_pass - m_factor_pass >= m_O.cholesky_every || !m_factored)) factorize();
+    if(m_O.coarse_aggregate > 0 && !m_factored) m_coarse.factorize(m_tets, m_dofs, m_grad, m_w, m_M, m_lambda);
     // The vector operations in parallel, the dot products per fixed block
     // of vertices (their dofs are contiguous): they do not depend on the
     // number of threads.
@@ -557,8 +555,8 @@ private:
     double rz = sums[0], rr = sums[1];
     const double r0 = std::sqrt(rr);
     std::size_t cg = 0;
-    const double tolerance = m_S.cg_forcing ? m_eta : m_S.cg_tolerance;
-    for(; cg < m_S.cg_max_iterations && std::sqrt(rr) > tolerance * r0; ++cg) {
+    const double tolerance = m_O.cg_forcing ? m_eta : volume_cg_tolerance;
+    for(; cg < m_O.cg_max_iterations && std::sqrt(rr) > tolerance * r0; ++cg) {
       apply(m_p, m_q);
       const double pq = blocked_sums<1>(V, m_threads, [&](std::size_t vb, std::size_t ve, std::array<double, 1>& a) {
         const auto d = dofs(vb, ve);
@@ -584,7 +582,8 @@ private:
   const std::vector<Tet>& m_tets;
   const std::vector<char>& m_on_border;
   const std::vector<std::array<int, 3> >& m_border_faces;
-  const Volume_flow_settings& m_S;
+  const Discrete_lie_flow_volume_options& m_O;
+  const Volume_share_levels& m_levels;
   Volume_energy m_energy;
   Volume_dofs m_dofs;
   std::vector<double> m_u, m_dE, m_w, m_u_trial;
@@ -637,19 +636,20 @@ inline void locality_order(const std::vector<Vec3>& x, const std::vector<Tet>& t
 /// D_vol − 2 ≤ tolerance (and the levels' shares within theirs), a
 /// plateau, a stall or the cap, by `run_flow()`. x must be positive
 /// everywhere by the exact predicate; it stays so (and so do the border
-/// triangles seen from the centre with `S.star_shaped_border`).
+/// triangles seen from the centre with `O.star_shaped_border`).
 inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vector<Tet>& tets,
                                            const std::vector<char>& on_border,
                                            const std::vector<std::array<int, 3> >& border_faces,
                                            const std::vector<double>& target,
-                                           const Volume_flow_settings& S,
+                                           const Discrete_lie_flow_volume_options& O,
+                                           const Volume_share_levels& levels = Volume_share_levels(),
                                            std::vector<Volume_iteration>* history = nullptr)
 {
   // The coarse level's factorisations (a few thousand unknowns) gain nothing
   // from BLAS threads, whose spinning between calls takes the cores from
   // the flow's own threads (perf: sched_yield); the whole Gauss–Newton
   // matrix of cholesky_every keeps the automatic setting.
-  const Scoped_blas_threads blas(S.cholesky_every > 0 ? 0 : 1, x.size());
+  const Scoped_blas_threads blas(O.cholesky_every > 0 ? 0 : 1, x.size());
   // The flow runs on a renumbered copy (locality_order()); x is written back.
   std::vector<int> to_new, tet_order;
   locality_order(x, tets, to_new, tet_order);
@@ -661,12 +661,12 @@ inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vect
   }
   std::vector<Tet> tets_n(tets.size());
   std::vector<double> target_n(tets.size());
-  Volume_flow_settings Sn = S;
+  Volume_share_levels levels_n = levels;
   for(std::size_t i = 0; i < tets.size(); ++i) {
     const std::size_t t = std::size_t(tet_order[i]);
     for(std::size_t j = 0; j < 4; ++j) tets_n[i][j] = to_new[std::size_t(tets[t][j])];
     target_n[i] = target[t];
-    if(!S.level.empty()) Sn.level[i] = S.level[t];
+    if(!levels.level.empty()) levels_n.level[i] = levels.level[t];
   }
   std::vector<std::array<int, 3> > faces_n(border_faces.size());
   for(std::size_t f = 0; f < border_faces.size(); ++f)
@@ -680,20 +680,13 @@ inline Volume_flow_outcome run_volume_flow(std::vector<Vec3>& x, const std::vect
   // computed on the caller's numbering.
   std::vector<int> sum_order(tets.size());
   for(std::size_t i = 0; i < tets.size(); ++i) sum_order[std::size_t(tet_order[i])] = int(i);
-  Volume_certified_flow flow(xn, tets_n, on_border_n, faces_n, target_n, Sn, std::move(sum_order));
+  Volume_certified_flow flow(xn, tets_n, on_border_n, faces_n, target_n, O, levels_n, std::move(sum_order));
   // The driver records the surface flows' iteration; the volumetric one
   // adds the conjugate-gradient steps, its tets in the caller's order.
   const Discrete_lie_flow_options opt = volume_driver_options(
-    S, history, [&tet_order](int f) { return f >= 0 ? tet_order[std::size_t(f)] : -1; },
+    O, history, [&tet_order](int f) { return f >= 0 ? tet_order[std::size_t(f)] : -1; },
     [&flow] { return flow.last_cg_iterations(); });
-  const Flow_outcome o = run_flow(flow, opt);
-  Volume_flow_outcome out;
-  out.stop_reason = o.stop_reason;
-  out.iterations = o.iterations;
-  out.rejected_by_exact_check = o.rejected_by_exact_check;
-  out.cg_iterations = flow.cg_iterations();
-  out.energy = flow.energy();
-  return out;
+  return run_volume_policy(flow, opt);
 }
 
 } // namespace dlf

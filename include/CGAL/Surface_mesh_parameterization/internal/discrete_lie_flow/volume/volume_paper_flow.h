@@ -94,15 +94,19 @@ inline void lump_tets_on_vertices(std::size_t n, const std::vector<Tet>& tets, c
 /// unit sphere) is moved in place and holds on return the best iterate
 /// (lowest D_vol). Every accepted iterate has every tet positive by the
 /// exact predicate (and, with `star_shaped_border`, every border triangle
-/// positive seen from the centre).
+/// positive seen from the centre). Of the options it reads the tolerances,
+/// μ, `star_shaped_border` and `paper_collapse_guard` (the cap and the
+/// callback through volume_driver_options()); it has no conjugate gradients
+/// and runs on one thread.
 class Volume_paper_flow : public Flow_policy_base
 {
 public:
   Volume_paper_flow(std::vector<Vec3>& x, const std::vector<Tet>& tets, const std::vector<char>& on_border,
                     const std::vector<std::array<int, 3> >& border_faces, const std::vector<double>& target,
-                    const Volume_flow_settings& S, const Discrete_lie_flow_options& opt)
+                    const Discrete_lie_flow_volume_options& O, const Volume_share_levels& levels,
+                    const Discrete_lie_flow_options& opt)
     : Flow_policy_base(stopping_rules(opt)), m_x(x), m_tets(tets), m_on_border(on_border),
-      m_border_faces(border_faces), m_target(target), m_S(S), m_opt(opt), m_energy(target), m_solver(m_factor),
+      m_border_faces(border_faces), m_target(target), m_O(O), m_levels(levels), m_opt(opt), m_energy(target), m_solver(m_factor),
       m_v(x.size()), m_trial(x.size())
   {
     lump_tets_on_vertices(x.size(), tets, target, m_VM);
@@ -123,7 +127,7 @@ public:
 
   bool converged() const
   {
-    return m_best - 2 <= m_S.tolerance && level_share_error(m_S.level, m_S.level_share, m_best_u) <= m_S.share_tolerance;
+    return m_best - 2 <= m_O.tolerance && level_share_error(m_levels, m_best_u) <= m_O.share_tolerance;
   }
 
   /// The Poisson potential h of L h = V_Ω − V_M (the closed domain's
@@ -171,7 +175,7 @@ public:
       tangential(v, m_v[v]);
       vmax = (std::max)(vmax, norm3(m_v[v]));
     }
-    if(m_S.paper_collapse_guard) collapse_guard();
+    if(m_O.paper_collapse_guard) collapse_guard();
     return vmax > 0 ? Direction_status::DESCENT : Direction_status::NO_DESCENT;
   }
 
@@ -228,12 +232,12 @@ public:
       const std::size_t a = std::size_t(k[0]), b = std::size_t(k[1]), c = std::size_t(k[2]), d = std::size_t(k[3]);
       return critical_step_tet(m_x[a], m_x[b], m_x[c], m_x[d], m_v[a], m_v[b], m_v[c], m_v[d]);
     }, step.limiting);
-    if(m_S.star_shaped_border)
+    if(m_O.star_shaped_border)
       for(const auto& f : m_border_faces) {
         const std::size_t a = std::size_t(f[0]), b = std::size_t(f[1]), c = std::size_t(f[2]);
         step.critical = (std::min)(step.critical, critical_step_sphere(m_x[a], m_x[b], m_x[c], m_v[a], m_v[b], m_v[c]));
       }
-    step.lambda = (std::min)(1., m_S.mu * step.critical);
+    step.lambda = (std::min)(1., m_O.mu * step.critical);
     if(!std::isfinite(step.lambda)) step.lambda = 1;
   }
 
@@ -280,7 +284,7 @@ public:
   bool certified() const
   {
     return !take_forced_trial_refusal() && count_bad_tets(m_trial, m_tets).not_positive() == 0 &&
-           !(m_S.star_shaped_border && count_bad_border_faces(m_trial, m_border_faces) != 0);
+           !(m_O.star_shaped_border && count_bad_border_faces(m_trial, m_border_faces) != 0);
   }
 
   void commit(const Flow_step&, Flow_outcome&)
@@ -299,6 +303,7 @@ public:
   double progress() const { return m_best; } // the stop tests watch the best D_vol
   double residual() const { return 0; }      // not part of the volumetric record
   double energy() const { return m_best; }
+  std::size_t cg_iterations() const { return 0; } // no conjugate gradients
 
   void finish(Flow_outcome& out)
   {
@@ -328,7 +333,8 @@ private:
   const std::vector<char>& m_on_border;
   const std::vector<std::array<int, 3> >& m_border_faces;
   const std::vector<double>& m_target;
-  const Volume_flow_settings& m_S;
+  const Discrete_lie_flow_volume_options& m_O;
+  const Volume_share_levels& m_levels;
   const Discrete_lie_flow_options& m_opt;
   Volume_energy m_energy;
   Default_spd_solver m_factor;
@@ -348,20 +354,16 @@ private:
 inline Volume_flow_outcome run_volume_paper_flow(std::vector<Vec3>& x, const std::vector<Tet>& tets,
                                                  const std::vector<char>& on_border,
                                                  const std::vector<std::array<int, 3> >& border_faces,
-                                                 const std::vector<double>& target, const Volume_flow_settings& S,
+                                                 const std::vector<double>& target,
+                                                 const Discrete_lie_flow_volume_options& O,
+                                                 const Volume_share_levels& levels = Volume_share_levels(),
                                                  std::vector<Volume_iteration>* history = nullptr)
 {
   const Scoped_blas_threads blas(1, x.size()); // one small factorisation per iteration
   const Discrete_lie_flow_options opt =
-    volume_driver_options(S, history, [](int f) { return f; }, [] { return std::size_t(0); });
-  Volume_paper_flow flow(x, tets, on_border, border_faces, target, S, opt);
-  const Flow_outcome o = run_flow(flow, opt);
-  Volume_flow_outcome out;
-  out.stop_reason = o.stop_reason;
-  out.iterations = o.iterations;
-  out.rejected_by_exact_check = o.rejected_by_exact_check;
-  out.energy = flow.energy();
-  return out;
+    volume_driver_options(O, history, [](int f) { return f; }, [] { return std::size_t(0); });
+  Volume_paper_flow flow(x, tets, on_border, border_faces, target, O, levels, opt);
+  return run_volume_policy(flow, opt);
 }
 
 } // namespace dlf

@@ -32,25 +32,6 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace dlf {
 
-/// The flow's settings that come straight from the options (the callback
-/// and the density levels are set by the caller).
-inline Volume_flow_settings volume_flow_settings(const Discrete_lie_flow_volume_options& O)
-{
-  Volume_flow_settings S;
-  S.tolerance = O.tolerance;
-  S.max_iterations = O.max_iterations;
-  S.mu = O.mu;
-  S.cg_max_iterations = O.cg_max_iterations;
-  S.cholesky_every = O.cholesky_every;
-  S.threads = O.threads;
-  S.coarse_aggregate = O.coarse_aggregate;
-  S.cg_forcing = O.cg_forcing;
-  S.star_shaped_border = O.star_shaped_border;
-  S.share_tolerance = O.share_tolerance;
-  S.paper_collapse_guard = O.paper_collapse_guard;
-  return S;
-}
-
 /// Sets the report's status and message (the code's own message when
 /// `message` is empty); returns the code.
 inline Error_code volume_failure(Discrete_lie_flow_volume_report& R, int code, const std::string& message)
@@ -100,27 +81,30 @@ inline int volume_targets(const std::vector<Vec3>& xyz, const std::vector<Tet>& 
   return OK;
 }
 
-/// The density levels of `S` (a level per density value, its prescribed
-/// share of the targets): set with a share tolerance and 2 to 32 values.
-inline void set_volume_levels(const Discrete_lie_flow_volume_options& O, const std::vector<double>& target,
-                              Volume_flow_settings& S)
+/// The density levels of a run (a level per density value, its prescribed
+/// share of the targets): set with a share tolerance and 2 to 32 values,
+/// else none.
+inline Volume_share_levels volume_share_levels(const Discrete_lie_flow_volume_options& O,
+                                               const std::vector<double>& target)
 {
-  if(O.tet_density.empty() || !(O.share_tolerance > 0)) return;
+  Volume_share_levels levels;
+  if(O.tet_density.empty() || !(O.share_tolerance > 0)) return levels;
   std::map<double, int> ids;
   for(double rho : O.tet_density) {
     if(ids.size() > 32) break;
     ids.emplace(rho, int(ids.size()));
   }
-  if(ids.size() > 32 || ids.size() <= 1) return;
-  S.level.resize(target.size());
-  S.level_share.assign(ids.size(), 0.);
+  if(ids.size() > 32 || ids.size() <= 1) return levels;
+  levels.level.resize(target.size());
+  levels.share.assign(ids.size(), 0.);
   double Tsum = 0;
   for(std::size_t t = 0; t < target.size(); ++t) {
-    S.level[t] = ids[O.tet_density[t]];
-    S.level_share[std::size_t(S.level[t])] += target[t];
+    levels.level[t] = ids[O.tet_density[t]];
+    levels.share[std::size_t(levels.level[t])] += target[t];
     Tsum += target[t];
   }
-  for(double& a : S.level_share) a /= Tsum;
+  for(double& a : levels.share) a /= Tsum;
+  return levels;
 }
 
 /// The flow from the certified start `x`, in rounds: where D_vol's minimum
@@ -130,7 +114,7 @@ inline void set_volume_levels(const Discrete_lie_flow_volume_options& O, const s
 /// rounds). The outcome sums the rounds; the stop reason is the last one's.
 inline Volume_flow_outcome run_volume_rounds(const Discrete_lie_flow_volume_options& O, std::vector<Vec3>& x,
                                              const std::vector<Tet>& tets, const Ball_topology& topo,
-                                             const std::vector<double>& target, const Volume_flow_settings& S,
+                                             const std::vector<double>& target, const Volume_share_levels& levels,
                                              std::vector<Volume_iteration>* history)
 {
   std::vector<double> flow_target = target, u;
@@ -138,21 +122,21 @@ inline Volume_flow_outcome run_volume_rounds(const Discrete_lie_flow_volume_opti
   for(int round = 0;; ++round) {
     const Volume_flow_outcome o =
       O.mode == Discrete_lie_flow_mode::PAPER
-        ? run_volume_paper_flow(x, tets, topo.on_border, topo.border_faces, flow_target, S, history)
-        : run_volume_flow(x, tets, topo.on_border, topo.border_faces, flow_target, S, history);
+        ? run_volume_paper_flow(x, tets, topo.on_border, topo.border_faces, flow_target, O, levels, history)
+        : run_volume_flow(x, tets, topo.on_border, topo.border_faces, flow_target, O, levels, history);
     out.iterations += o.iterations;
     out.rejected_by_exact_check += o.rejected_by_exact_check;
     out.cg_iterations += o.cg_iterations;
     out.stop_reason = o.stop_reason;
-    if(S.level.empty() || round >= 5 || o.stop_reason == Discrete_lie_flow_stop_reason::CONVERGED ||
+    if(levels.level.empty() || round >= 5 || o.stop_reason == Discrete_lie_flow_stop_reason::CONVERGED ||
        o.stop_reason == Discrete_lie_flow_stop_reason::INTERRUPTED)
       break;
     std::vector<double> achieved;
     tet_dets(x, tets, u);
-    if(level_share_error(S.level, S.level_share, u, &achieved) <= S.share_tolerance) break;
+    if(level_share_error(levels, u, &achieved) <= O.share_tolerance) break;
     for(std::size_t t = 0; t < tets.size(); ++t) {
-      const std::size_t k = std::size_t(S.level[t]);
-      flow_target[t] *= S.level_share[k] / achieved[k];
+      const std::size_t k = std::size_t(levels.level[t]);
+      flow_target[t] *= levels.share[k] / achieved[k];
     }
   }
   return out;
@@ -200,15 +184,15 @@ inline void measure_volume_ratios(const Discrete_lie_flow_volume_options& O, con
 
 /// The message of a valid map short of its goals, as the surface flows
 /// word it: where it stopped, each goal missed with its value.
-inline std::string volume_not_converged_message(const Discrete_lie_flow_volume_options& O, const Volume_flow_settings& S,
+inline std::string volume_not_converged_message(const Discrete_lie_flow_volume_options& O, const Volume_share_levels& levels,
                                                 const Discrete_lie_flow_volume_report& R, double d_vol_reached,
                                                 double share_error_reached)
 {
   std::ostringstream missed;
   missed << std::setprecision(6);
   if(!(d_vol_reached - 2 <= O.tolerance)) missed << "D_vol " << d_vol_reached << " > " << 2 + O.tolerance;
-  if(!S.level.empty() && !(share_error_reached <= S.share_tolerance))
-    missed << (missed.tellp() > 0 ? "; " : "") << "share error " << share_error_reached << " > " << S.share_tolerance;
+  if(!levels.level.empty() && !(share_error_reached <= O.share_tolerance))
+    missed << (missed.tellp() > 0 ? "; " : "") << "share error " << share_error_reached << " > " << O.share_tolerance;
   std::ostringstream s;
   s << std::setprecision(6) << "not converged: stopped (" << discrete_lie_flow_stop_reason_name(R.stop_reason)
     << ") after " << R.iterations << " iterations short of "
@@ -229,18 +213,16 @@ inline Error_code flow_volume(const Discrete_lie_flow_volume_options& O, std::ve
   std::vector<double> u;
   tet_dets(x, tets, u);
   R.initial_d_vol = energy.value(u, 0);
-  Volume_flow_settings S = volume_flow_settings(O);
-  S.callback = O.callback; // the flow's iterations too, not only the start's
-  set_volume_levels(O, target, S);
+  const Volume_share_levels levels = volume_share_levels(O, target);
   const Clock::time_point t_flow = Clock::now();
-  Volume_flow_outcome out = run_volume_rounds(O, x, tets, topo, target, S, O.record_history ? &R.history : nullptr);
+  Volume_flow_outcome out = run_volume_rounds(O, x, tets, topo, target, levels, O.record_history ? &R.history : nullptr);
   // Converged: D_vol against the prescribed targets, and the shares. (The
   // last round may have stopped on its rescaled targets' plateau with both
   // tolerances met on the prescribed ones: that is converged.)
   tet_dets(x, tets, u);
   const double d_vol_reached = energy.value(u, 0);
-  const double share_error_reached = level_share_error(S.level, S.level_share, u);
-  const bool reached = d_vol_reached - 2 <= O.tolerance && share_error_reached <= S.share_tolerance;
+  const double share_error_reached = level_share_error(levels, u);
+  const bool reached = d_vol_reached - 2 <= O.tolerance && share_error_reached <= O.share_tolerance;
   if(reached && out.stop_reason != Discrete_lie_flow_stop_reason::INTERRUPTED)
     out.stop_reason = Discrete_lie_flow_stop_reason::CONVERGED;
   else if(!reached && out.stop_reason == Discrete_lie_flow_stop_reason::CONVERGED)
@@ -264,7 +246,7 @@ inline Error_code flow_volume(const Discrete_lie_flow_volume_options& O, std::ve
                             std::to_string(R.inverted_border_faces) + " border triangles not positive");
   R.status = OK;
   R.message = R.converged() ? std::string("Success")
-                            : volume_not_converged_message(O, S, R, d_vol_reached, share_error_reached);
+                            : volume_not_converged_message(O, levels, R, d_vol_reached, share_error_reached);
   return OK;
 }
 
