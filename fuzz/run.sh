@@ -30,7 +30,9 @@ mkdir -p "$BUILD_DIR/obj" "$BUILD_DIR/corpus/$MODE" "$BUILD_DIR/artifacts" "$BUI
 # is a finding too. Undefined behaviour aborts (halt_on_error), except what
 # fuzz/ubsan.supp lists in third-party headers, which needs the check to be
 # recoverable. The default SPD solver (Eigen's) avoids linking CHOLMOD.
-flags=(-std=c++17 -O1 -g -fno-omit-frame-pointer
+# Line tables only (-gline-tables-only): a finding's stack trace names file
+# and line as with -g, and the six sources compile in two thirds of the time.
+flags=(-std=c++17 -O1 -gline-tables-only -fno-omit-frame-pointer
        -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
        -fsanitize-recover=float-cast-overflow
        -Iinclude -Itools/dlf -isystem /usr/include/eigen3 -DCGAL_EIGEN3_ENABLED)
