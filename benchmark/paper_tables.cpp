@@ -722,7 +722,7 @@ int main(int argc, char** argv)
     ("meshes", po::value<std::string>(&disk_arg)->default_value(
        "patch-23.off,patch-13.off,patch-21.off,blob.off,nefertiti.off,patch-20.off,patch-30.off,mesh_with_border.off,"
        "patch-01.off,plane.off,three_peaks.off,mushroom.off,"
-       "lion-head.off,mannequin-devil.off,lion-head.off+loop1"), "disk meshes (NAME+loopK: K Loop subdivisions)")
+       "lion-head.off,mannequin-devil.off,lion-head.off+loop1,mannequin-devil.off+loop2"), "disk meshes (NAME+loopK: K Loop subdivisions)")
     ("sphere-meshes", po::value<std::string>(&sphere_arg)->default_value(
        "armadillo.off,bear.off,bunny00.off,cow.off,homer.off,fandisk.off,camel.off,triceratops.off"), "closed genus-0 meshes")
     ("measure-meshes", po::value<std::string>(&measure_arg)->default_value("nefertiti.off,mushroom.off,lion-head.off"),

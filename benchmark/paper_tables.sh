@@ -5,7 +5,7 @@
 # doc/paper_experiments.md (between the GENERATED markers; the text around
 # them is kept) and all the numbers into doc/paper_experiments.json.
 #
-#   benchmark/paper_tables.sh                                # every default mesh (about 15 min on a busy 2-core machine)
+#   benchmark/paper_tables.sh                                # every default mesh (about 20 min on a busy 2-core machine)
 #   benchmark/paper_tables.sh --meshes blob.off --sphere-meshes bear.off
 #   BUILD_DIR=build build/benchmark/paper_tables --check     # checks of the OT solver only
 #
