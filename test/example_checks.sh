@@ -95,6 +95,42 @@ atlas)
       if(last != "converged") { print "ended " last; exit 1 }
     }' || fail "output"
   ;;
+seams)
+  # lion cut along CGAL's seam selection: a disk with holes, converged to
+  # D_area <= 2.01; the map measured independently agrees and has no fold.
+  out=$("$EXE" "$MESHES/lion.off" "$(dirname "$0")/data/lion.selection.txt") || fail "exit $?"
+  echo "$out"
+  echo "$out" | grep -q '^status: ok ' || fail "status"
+  echo "$out" | awk '
+    /^flow: / { seen = 1; for(i = 1; i <= NF; ++i) if($i == "stop:") stop = $(i + 1); d = $NF; sub(/,$/, "", stop) }
+    /^measured: / { m = $3; sub(/,$/, "", m); folds = $NF }
+    / holes$/ { holes = $(NF - 1) }
+    END {
+      if(!seen) { print "no flow line"; exit 1 }
+      if(stop != "converged") { print "stopped " stop; exit 1 }
+      if(!(d + 0 >= 2 && d + 0 <= 2.01)) { print "D_area " d " not in [2, 2.01]"; exit 1 }
+      if(m == "" || (m - d > 1e-6 || d - m > 1e-6)) { print "measured D_area " m " differs from the report'"'"'s " d; exit 1 }
+      if(folds != "0") { print folds " inverted or degenerate faces"; exit 1 }
+      if(!(holes + 0 > 0)) { print "no hole: the seams did not cut the lion open as expected"; exit 1 }
+    }' || fail "output"
+  ;;
+volume_map)
+  # The Mesh_3 sphere kept in test/data: converged to D_vol <= 2.01, no
+  # inverted or flat tet, every border face facing out, inside the ball.
+  out=$("$EXE" "$(dirname "$0")/data/sphere_tets.mesh") || fail "exit $?"
+  echo "$out"
+  echo "$out" | grep -q '^status: ok ' || fail "status"
+  echo "$out" | grep -q '^inverted or flat tets: 0, border faces not facing out: 0$' || fail "inverted tets"
+  echo "$out" | awk '
+    /^flow: / { seen = 1; for(i = 1; i <= NF; ++i) { if($i == "stop:") stop = $(i + 1); if($i == "->") d = $(i + 1) } sub(/,$/, "", stop); sub(/,$/, "", d) }
+    /^largest \|x\| / { r = $NF }
+    END {
+      if(!seen) { print "no flow line"; exit 1 }
+      if(stop != "converged") { print "stopped " stop; exit 1 }
+      if(!(d + 0 >= 2 && d + 0 <= 2.01)) { print "D_vol " d " not in [2, 2.01]"; exit 1 }
+      if(!(r + 0 > 0.9 && r + 0 <= 1 + 1e-12)) { print "largest |x| " r; exit 1 }
+    }' || fail "output"
+  ;;
 *)
   fail "no check for example '$NAME' (add one here)"
   ;;
