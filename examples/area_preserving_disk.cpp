@@ -5,6 +5,9 @@
 // Discrete Lie Flow, called exactly like the parameterizers CGAL ships.
 //
 // Usage: area_preserving_disk [mesh.off]
+// Without a mesh: meshes/nefertiti.off of CGAL's data set, found as CGAL's own
+// examples find it: CGAL::data_file_path() reads $CGAL_DATA_DIR, else the
+// macro of that name (this project's build defines it).
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -30,7 +33,7 @@ namespace SMP = CGAL::Surface_mesh_parameterization;
 
 int main(int argc, char** argv)
 {
-  const std::string filename = (argc > 1) ? argv[1] : std::string(DLF_DATA_DIR) + "/meshes/nefertiti.off";
+  const std::string filename = (argc > 1) ? argv[1] : CGAL::data_file_path("meshes/nefertiti.off");
 
   Surface_mesh sm;
   if(!CGAL::Polygon_mesh_processing::IO::read_polygon_mesh(filename, sm)) {

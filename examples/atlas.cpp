@@ -6,6 +6,9 @@
 // uv map is per corner (per halfedge), as CGAL's Seam_mesh users expect.
 //
 // Usage: atlas [mesh.off]
+// Without a mesh: meshes/elephant.off of CGAL's data set, found as CGAL's own
+// examples find it: CGAL::data_file_path() reads $CGAL_DATA_DIR, else the
+// macro of that name (this project's build defines it).
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -25,7 +28,7 @@ namespace SMP = CGAL::Surface_mesh_parameterization;
 
 int main(int argc, char** argv)
 {
-  const std::string filename = (argc > 1) ? argv[1] : std::string(DLF_DATA_DIR) + "/meshes/elephant.off";
+  const std::string filename = (argc > 1) ? argv[1] : CGAL::data_file_path("meshes/elephant.off");
 
   Surface_mesh sm;
   if(!CGAL::Polygon_mesh_processing::IO::read_polygon_mesh(filename, sm)) {

@@ -8,6 +8,9 @@
 // prescribed against achieved shares is printed.
 //
 // Usage: measure_controlled OUT_DIR [mesh.off X Y Z R [BAND]]
+// Without a mesh: meshes/lion-head.off of CGAL's data set, found as CGAL's
+// own examples find it: CGAL::data_file_path() reads $CGAL_DATA_DIR, else the
+// macro of that name (this project's build defines it).
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -86,7 +89,7 @@ int main(int argc, char** argv)
   }
   const std::string out_dir = argv[1];
   // Default: the lion's muzzle, a ball of a tenth of the bounding box diagonal.
-  const std::string filename = argc > 2 ? argv[2] : std::string(DLF_DATA_DIR) + "/meshes/lion-head.off";
+  const std::string filename = argc > 2 ? argv[2] : CGAL::data_file_path("meshes/lion-head.off");
   const Point_3 centre = argc > 2 ? Point_3(std::stod(argv[3]), std::stod(argv[4]), std::stod(argv[5]))
                                   : Point_3(-0.076, -0.126, 0.5);
   const double radius = argc > 2 ? std::stod(argv[6]) : 0.157;

@@ -6,6 +6,9 @@
 // elements the run stored as properties of the mesh; writes no file.
 //
 // Usage: sphere_map [mesh.off] [max_iterations]
+// Without a mesh: meshes/blobby.off of CGAL's data set, found as CGAL's own
+// examples find it: CGAL::data_file_path() reads $CGAL_DATA_DIR, else the
+// macro of that name (this project's build defines it).
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -29,7 +32,7 @@ namespace SMP = CGAL::Surface_mesh_parameterization;
 
 int main(int argc, char** argv)
 {
-  const std::string filename = (argc > 1) ? argv[1] : std::string(DLF_DATA_DIR) + "/meshes/blobby.off";
+  const std::string filename = (argc > 1) ? argv[1] : CGAL::data_file_path("meshes/blobby.off");
 
   Surface_mesh sm;
   if(!CGAL::Polygon_mesh_processing::IO::read_polygon_mesh(filename, sm)) {

@@ -5,7 +5,7 @@
 # on any error:
 #   - ```sh blocks: bash -e, line by line as a user pastes them;
 #   - the ```cpp block: compiled from this very text by the build
-#     (test/CMakeLists.txt extracts it), run on a disk (exit 0, its line) and
+#     (examples/CMakeLists.txt extracts it), run on a disk (exit 0, its line) and
 #     on a closed mesh (exit 1, the report's message on stderr);
 #   - ```python blocks: with PYTHONPATH=build/python, as the README says, by
 #     $DLF_PYTHON (the interpreter the module was built for; default python3).
