@@ -87,13 +87,18 @@ public:
 
   bool factorize(const Sparse_matrix& A)
   {
-    if(!same_pattern(A)) {
+    const bool analyse = !same_pattern(A);
+    if(analyse) {
       m_solver.analyzePattern(A);
-      m_outer.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
-      m_inner.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
       ++m_analyses;
     }
     m_solver.factorize(A);
+    // The pattern's copy after the factor is made: not beside it at the
+    // factorization's peak (the analysis needs none of it).
+    if(analyse) {
+      m_outer.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
+      m_inner.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
+    }
     return m_solver.info() == Eigen::Success;
   }
 
@@ -111,6 +116,9 @@ public:
   }
 
   std::size_t analyses() const { return m_analyses; }
+
+  /// The wrapped solver.
+  EigenSolver& solver() { return m_solver; }
 
   /// Takes over the analysis that `other`, wrapping the same solver, made
   /// (its last factorization's pattern): a matrix of that pattern is then
