@@ -85,20 +85,21 @@ class Pattern_reusing_solver
 public:
   explicit Pattern_reusing_solver(EigenSolver& solver) : m_solver(solver) {}
 
+  /// The symbolic analysis of `A`'s pattern, unless it is the last one's:
+  /// the next factorize() of that pattern does not redo it.
+  void analyze(const Sparse_matrix& A)
+  {
+    if(same_pattern(A)) return;
+    m_solver.analyzePattern(A);
+    m_outer.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
+    m_inner.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
+    ++m_analyses;
+  }
+
   bool factorize(const Sparse_matrix& A)
   {
-    const bool analyse = !same_pattern(A);
-    if(analyse) {
-      m_solver.analyzePattern(A);
-      ++m_analyses;
-    }
+    analyze(A);
     m_solver.factorize(A);
-    // The pattern's copy after the factor is made: not beside it at the
-    // factorization's peak (the analysis needs none of it).
-    if(analyse) {
-      m_outer.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
-      m_inner.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
-    }
     return m_solver.info() == Eigen::Success;
   }
 

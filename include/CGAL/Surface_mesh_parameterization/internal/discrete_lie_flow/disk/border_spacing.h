@@ -153,19 +153,22 @@ public:
   Tutte_interior_system(const Disk_problem& P, std::size_t n, EigenSolver& solver) : m_solver(solver), m_P(&P), m_n(n)
   {
     Sparse_matrix A;
-    {
-      std::vector<std::vector<int> > neighbours;
-      m_unknowns = tutte_interior_matrix(P, n, m_interior, neighbours, A);
-      // rhs = B uv: each interior vertex sums its border neighbours.
-      std::vector<Eigen::Triplet<double> > coupling;
-      for(std::size_t v = 0; v < n; ++v)
-        if(m_interior[v] >= 0)
-          for(int w : neighbours[v])
-            if(m_interior[std::size_t(w)] < 0) coupling.emplace_back(m_interior[v], w, 1.);
-      m_B.resize(m_unknowns, Eigen::Index(n));
-      m_B.setFromTriplets(coupling.begin(), coupling.end());
-    } // the adjacency goes before the factorization, the process's largest allocation
+    std::vector<std::vector<int> > neighbours;
+    m_unknowns = tutte_interior_matrix(P, n, m_interior, neighbours, A);
     A.makeCompressed();
+    // The analysis first (AMD ran slower with the adjacency freed before it),
+    // then the adjacency goes before the numeric factorization, the
+    // process's largest allocation.
+    if(m_unknowns > 0) m_solver.analyze(A);
+    // rhs = B uv: each interior vertex sums its border neighbours.
+    std::vector<Eigen::Triplet<double> > coupling;
+    for(std::size_t v = 0; v < n; ++v)
+      if(m_interior[v] >= 0)
+        for(int w : neighbours[v])
+          if(m_interior[std::size_t(w)] < 0) coupling.emplace_back(m_interior[v], w, 1.);
+    std::vector<std::vector<int> >().swap(neighbours);
+    m_B.resize(m_unknowns, Eigen::Index(n));
+    m_B.setFromTriplets(coupling.begin(), coupling.end());
     m_factorized = m_unknowns > 0 && m_solver.factorize(A);
   }
 
