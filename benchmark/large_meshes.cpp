@@ -36,6 +36,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <malloc.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -54,7 +55,8 @@ using dlf_benchmark::seconds_since;
 struct Process_run
 {
   int exit_code = -1;
-  double seconds = 0, max_rss_gib = 0;
+  double seconds = 0, cpu_seconds = 0, max_rss_gib = 0;
+  long max_rss_kib = 0;
 };
 
 // Runs `argv` as a child process; its wall time and maximum resident set.
@@ -78,7 +80,10 @@ Process_run run_process(const std::vector<std::string>& args)
   if(wait4(pid, &status, 0, &usage) != pid) return r;
   r.seconds = seconds_since(t0);
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.max_rss_gib = double(usage.ru_maxrss) / (1024. * 1024.); // kilobytes on Linux
+  r.cpu_seconds = double(usage.ru_utime.tv_sec) + 1e-6 * double(usage.ru_utime.tv_usec) +
+                  double(usage.ru_stime.tv_sec) + 1e-6 * double(usage.ru_stime.tv_usec);
+  r.max_rss_kib = usage.ru_maxrss; // kilobytes on Linux
+  r.max_rss_gib = double(usage.ru_maxrss) / (1024. * 1024.);
   return r;
 }
 
@@ -211,8 +216,10 @@ nlohmann::ordered_json run_row(const Dlf_run& r)
 {
   nlohmann::ordered_json row;
   row["whole_process_seconds"] = r.process.seconds;
+  row["cpu_seconds"] = r.process.cpu_seconds;
   row["exit_code"] = r.process.exit_code;
   row["max_rss_gib"] = r.process.max_rss_gib;
+  row["max_rss_kib"] = r.process.max_rss_kib;
   const nlohmann::json& R = r.report;
   if(!R.is_object() || !R.contains("seconds")) return row;
   row["iterations"] = R["iterations"];
@@ -228,6 +235,19 @@ nlohmann::ordered_json run_row(const Dlf_run& r)
   return row;
 }
 
+// The number of faces an OFF file's header declares.
+std::size_t off_face_count(const std::string& path)
+{
+  std::ifstream in(path);
+  std::string word;
+  std::size_t vertices = 0, faces = 0;
+  while(in >> word && word[0] == '#') std::getline(in, word);
+  if(word != "OFF") return 0;
+  while(in >> std::ws && in.peek() == '#') std::getline(in, word);
+  in >> vertices >> faces;
+  return faces;
+}
+
 double seconds_of(const nlohmann::ordered_json& row, const char* key)
 {
   return row.contains("seconds") && row["seconds"].contains(key) ? row["seconds"][key].get<double>() : 0.;
@@ -240,7 +260,7 @@ int main(int argc, char** argv)
   namespace po = boost::program_options;
   std::string data_dir = DLF_DATA_DIR, dlf_path = "build/tools/dlf", work, json_path;
   std::vector<std::string> specs;
-  bool floor = false, plain = true;
+  bool floor = false, plain = true, keep = false;
   po::options_description desc("large_meshes [options] SPEC...  (SPEC: name.off[+loopK|+midK][+scramble])");
   desc.add_options()("help,h", "show this help")
     ("data-dir", po::value<std::string>(&data_dir), "directory with meshes/ (CGAL's data set)")
@@ -249,6 +269,7 @@ int main(int argc, char** argv)
     ("json", po::value<std::string>(&json_path), "write every number to this JSON file")
     ("floor", po::bool_switch(&floor), "also measure one factorization and solve of the finest level's stiffness")
     ("no-plain", "do not run the plain flow (--coarse-to-fine-faces 0) beside the default")
+    ("keep-meshes", po::bool_switch(&keep), "keep the OFF files written in --work (a later run reads them instead of making them)")
     ("spec", po::value<std::vector<std::string> >(&specs), "mesh specs");
   po::positional_options_description pos;
   pos.add("spec", -1);
@@ -268,41 +289,59 @@ int main(int argc, char** argv)
   dlf_path = std::filesystem::absolute(dlf_path).string();
 
   std::cout << "load " << dlf_benchmark::loadavg() << "\n";
-  std::printf("%-34s %9s %6s %9s %4s %7s %3s %8s %6s | %7s %6s %6s %6s | %4s %8s %6s %6s\n", "mesh", "faces", "levels",
-              "coarse it", "it", "d_area", "inv", "whole s", "GiB", "levels", "read", "init", "write", "it", "plain s",
-              "GiB", "ratio");
+  std::printf("%-34s %9s %6s %9s %4s %7s %3s %8s %8s %6s %6s | %7s %6s %6s %6s | %4s %8s %6s %6s\n", "mesh", "faces",
+              "levels", "coarse it", "it", "d_area", "inv", "whole s", "cpu s", "GiB", "KiB/f", "levels", "read", "init",
+              "write", "it", "plain s", "GiB", "ratio");
   nlohmann::ordered_json all = nlohmann::ordered_json::array();
   for(const std::string& spec_text : specs) {
     dlf_benchmark::Mesh_spec spec;
     std::string why;
     if(!dlf_benchmark::parse_mesh_spec(spec_text, spec, why)) { std::cerr << "large_meshes: " << why << "\n"; return 2; }
-    Mesh mesh;
-    if(!CGAL::IO::read_polygon_mesh((meshes / spec.file).string(), mesh)) {
-      std::cerr << "large_meshes: cannot read " << spec.file << "\n";
-      return 2;
-    }
-    dlf_benchmark::subdivide(mesh, spec);
     const std::string stem = (std::filesystem::path(work) / spec_text).string();
     const std::string off = stem + ".off";
-    // A mesh already there (from an earlier run) is used and kept; one
-    // written here is removed once measured, as are the outputs.
+    // A mesh already there (from an earlier run, or kept by --keep-meshes)
+    // is used and kept; one written here is removed once measured, as are
+    // the outputs.
     const bool written = !std::filesystem::exists(off);
-    if(written && !CGAL::IO::write_polygon_mesh(off, mesh, CGAL::parameters::stream_precision(17))) {
-      std::cerr << "large_meshes: cannot write " << off << "\n";
-      return 2;
+    std::size_t face_count = 0;
+    {
+      // The mesh lives in this scope only: the child gets the memory back.
+      Mesh mesh;
+      if(written && !CGAL::IO::read_polygon_mesh((meshes / spec.file).string(), mesh)) {
+        std::cerr << "large_meshes: cannot read " << spec.file << "\n";
+        return 2;
+      }
+      if(written) {
+        dlf_benchmark::subdivide(mesh, spec);
+        if(!CGAL::IO::write_polygon_mesh(off, mesh, CGAL::parameters::stream_precision(17))) {
+          std::cerr << "large_meshes: cannot write " << off << "\n";
+          return 2;
+        }
+        face_count = num_faces(mesh);
+      } else {
+        face_count = off_face_count(off);
+      }
     }
+    malloc_trim(0);
+    struct rusage self;
+    getrusage(RUSAGE_SELF, &self);
     nlohmann::ordered_json row;
     row["mesh"] = spec_text;
-    row["faces"] = num_faces(mesh);
+    row["faces"] = face_count;
+    row["generation_max_rss_kib"] = self.ru_maxrss; // this process so far (the largest mesh made yet)
     row["default"] = run_row(run_dlf(dlf_path, off, stem, {}));
     if(plain) row["plain"] = run_row(run_dlf(dlf_path, off, stem + ".plain", { "--coarse-to-fine-faces", "0" }));
-    std::error_code ignored;
-    if(written) std::filesystem::remove(off, ignored);
     if(floor) {
+      Mesh mesh;
+      if(!CGAL::IO::read_polygon_mesh(off, mesh)) {
+        std::cerr << "large_meshes: cannot read " << off << "\n";
+        return 2;
+      }
       const Floor f = measure_floor(mesh);
       row["floor"] = { { "unknowns", f.unknowns }, { "analyse", f.analyse }, { "factorize", f.factorize }, { "solve", f.solve } };
     }
-    mesh.clear();
+    std::error_code ignored;
+    if(written && !keep) std::filesystem::remove(off, ignored);
     // Copies: an ordered_json object is a vector, and the ratio added below moves it.
     const nlohmann::ordered_json d = row["default"];
     const auto num = [](const nlohmann::ordered_json& j, const char* key) {
@@ -316,11 +355,13 @@ int main(int argc, char** argv)
     const double plain_seconds = num(p, "whole_process_seconds");
     row["ratio_to_plain"] = plain_seconds > 0 ? num(d, "whole_process_seconds") / plain_seconds : 0.;
     all.push_back(row);
-    std::printf("%-34s %9zu %6zu %9d %4d %7.4f %3d %8.2f %6.2f | %7.2f %6.2f %6.2f %6.2f | %4d %8.2f %6.2f %6.3f\n",
-                spec_text.c_str(), std::size_t(row["faces"]), levels.size(), levels.empty() ? 0 : int(num(levels.front(), "iterations")),
+    std::printf("%-34s %9zu %6zu %9d %4d %7.4f %3d %8.2f %8.2f %6.2f %6.3f | %7.2f %6.2f %6.2f %6.2f | %4d %8.2f %6.2f %6.3f\n",
+                spec_text.c_str(), face_count, levels.size(), levels.empty() ? 0 : int(num(levels.front(), "iterations")),
                 int(num(d, "iterations")), num(d, "d_area"), int(num(d, "inverted")), num(d, "whole_process_seconds"),
-                num(d, "max_rss_gib"), level_seconds, seconds_of(d, "read"), seconds_of(d, "initial"), seconds_of(d, "write"),
+                num(d, "cpu_seconds"), num(d, "max_rss_gib"), face_count > 0 ? num(d, "max_rss_kib") / double(face_count) : 0., level_seconds, seconds_of(d, "read"), seconds_of(d, "initial"), seconds_of(d, "write"),
                 int(num(p, "iterations")), plain_seconds, num(p, "max_rss_gib"), num(row, "ratio_to_plain"));
+    if(written)
+      std::printf("%-34s this process's max RSS after making it: %.2f GiB\n", "", double(self.ru_maxrss) / (1024. * 1024.));
     std::fflush(stdout);
   }
   std::cout << "load " << dlf_benchmark::loadavg() << "\n";

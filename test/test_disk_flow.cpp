@@ -1208,6 +1208,44 @@ TEST(Coarse_to_fine, RefusedWhenNoVertexCanGo)
   EXPECT_EQ(r.report.levels_refused, "no interior vertex could be removed");
 }
 
+// The Tutte start's factor loses its values while the levels run; a solve
+// after that (a refused hierarchy's border spacing) refactorizes the same
+// matrix with the same analysis: the same map, bit for bit.
+TEST(Coarse_to_fine, ReleasedTutteFactorSolvesTheSame)
+{
+  const int n = 20;
+  D::Disk_problem P;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i) P.xyz.push_back(D::Vec3{{ double(i) / n, double(j) / n, 0.1 * std::sin(3.0 * i + j) / n }});
+  const auto at = [n](int i, int j) { return j * (n + 1) + i; };
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      P.faces.push_back(D::Face{{ at(i, j), at(i + 1, j), at(i + 1, j + 1) }});
+      P.faces.push_back(D::Face{{ at(i, j), at(i + 1, j + 1), at(i, j + 1) }});
+    }
+  P.target.assign(P.faces.size(), 1.);
+  for(int i = 0; i < n; ++i) P.boundary.push_back(at(i, 0));
+  for(int j = 0; j < n; ++j) P.boundary.push_back(at(n, j));
+  for(int i = n; i > 0; --i) P.boundary.push_back(at(i, n));
+  for(int j = n; j > 0; --j) P.boundary.push_back(at(0, j));
+  std::vector<D::Vec2> uv(P.xyz.size(), D::Vec2{{ 0, 0 }});
+  ASSERT_TRUE(D::circle_border_by_arc_length(P, uv));
+  std::vector<D::Vec2> again = uv;
+  D::Default_spd_solver solver;
+  D::Tutte_interior_system<D::Default_spd_solver> tutte(P, uv.size(), solver);
+  ASSERT_TRUE(tutte.factorized());
+  ASSERT_TRUE(tutte.solve(uv));
+  tutte.release_factor();
+  tutte.release_factor(); // twice: nothing more
+  ASSERT_TRUE(tutte.solve(again));
+  EXPECT_TRUE(uv == again) << "the refactorized map differs";
+  EXPECT_EQ(tutte.solver().analyses(), 1u) << "the analysis was not kept";
+  // Solving again, with the values back, needs no refactorization.
+  std::vector<D::Vec2> third = uv;
+  ASSERT_TRUE(tutte.solve(third));
+  EXPECT_TRUE(uv == third);
+}
+
 } // namespace
 
 } // namespace dlf_test_disk_flow

@@ -59,6 +59,34 @@ void use_amd_ordering(Eigen::CholmodSupernodalLLT<Matrix, UpLo>& solver)
 }
 #endif
 
+/// Frees the numeric values of the solver's factor and keeps its symbolic
+/// analysis: a later factorization of a matrix of the same pattern needs no
+/// new analysis, but no solve may come before it. For a factor that waits
+/// unused (the Tutte start's, while the coarse levels run), the values are
+/// most of its memory. Other solvers are left as they are.
+template <class Solver>
+void release_numeric_factor(Solver&) {}
+
+#ifdef CGAL_DLF_USE_CHOLMOD
+template <class Matrix, int UpLo>
+void release_numeric_factor(Eigen::CholmodSupernodalLLT<Matrix, UpLo>& solver)
+{
+  typedef Eigen::CholmodSupernodalLLT<Matrix, UpLo> Solver;
+  // Eigen keeps the factor protected: reached through a derived class.
+  struct Access : Solver
+  {
+    static cholmod_factor* factor(Solver& s) { return s.*(&Access::m_cholmodFactor); }
+  };
+  cholmod_factor* L = Access::factor(solver);
+  if(L == nullptr || L->xtype == CHOLMOD_PATTERN) return;
+  // Numeric supernodal to symbolic supernodal: L->x goes, the supernodes stay.
+  if constexpr(sizeof(typename Matrix::StorageIndex) == sizeof(SuiteSparse_long))
+    cholmod_l_change_factor(CHOLMOD_PATTERN, L->is_ll, L->is_super, true, L->is_monotonic, L, &solver.cholmod());
+  else
+    cholmod_change_factor(CHOLMOD_PATTERN, L->is_ll, L->is_super, true, L->is_monotonic, L, &solver.cholmod());
+}
+#endif
+
 } // namespace dlf
 } // namespace internal
 } // namespace Surface_mesh_parameterization

@@ -85,14 +85,20 @@ class Pattern_reusing_solver
 public:
   explicit Pattern_reusing_solver(EigenSolver& solver) : m_solver(solver) {}
 
+  /// The symbolic analysis of `A`'s pattern, unless it is the last one's:
+  /// the next factorize() of that pattern does not redo it.
+  void analyze(const Sparse_matrix& A)
+  {
+    if(same_pattern(A)) return;
+    m_solver.analyzePattern(A);
+    m_outer.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
+    m_inner.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
+    ++m_analyses;
+  }
+
   bool factorize(const Sparse_matrix& A)
   {
-    if(!same_pattern(A)) {
-      m_solver.analyzePattern(A);
-      m_outer.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
-      m_inner.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
-      ++m_analyses;
-    }
+    analyze(A);
     m_solver.factorize(A);
     return m_solver.info() == Eigen::Success;
   }
@@ -111,6 +117,9 @@ public:
   }
 
   std::size_t analyses() const { return m_analyses; }
+
+  /// The wrapped solver.
+  EigenSolver& solver() { return m_solver; }
 
   /// Takes over the analysis that `other`, wrapping the same solver, made
   /// (its last factorization's pattern): a matrix of that pattern is then

@@ -28,6 +28,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/area_elements.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/boundary_curve.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/certification.h>
+#include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/disk/disk_problem.h>
 #include <CGAL/Surface_mesh_parameterization/internal/discrete_lie_flow/core/sparse_solver.h>
 
@@ -147,22 +148,28 @@ class Tutte_interior_system
 public:
   /// Assembles and factorises the system of `P`'s `n` vertices with `solver`.
   /// Only the factor and the border coupling are kept (the system lives as
-  /// long as the flow).
-  Tutte_interior_system(const Disk_problem& P, std::size_t n, EigenSolver& solver) : m_solver(solver)
+  /// long as the flow), and `P`, which must outlive the system when the
+  /// factor may be released (release_factor()).
+  Tutte_interior_system(const Disk_problem& P, std::size_t n, EigenSolver& solver) : m_solver(solver), m_P(&P), m_n(n)
   {
-    std::vector<std::vector<int> > neighbours;
     Sparse_matrix A;
+    std::vector<std::vector<int> > neighbours;
     m_unknowns = tutte_interior_matrix(P, n, m_interior, neighbours, A);
     A.makeCompressed();
-    m_factorized = m_unknowns > 0 && m_solver.factorize(A);
+    // The analysis first (AMD ran slower with the adjacency freed before it),
+    // then the adjacency goes before the numeric factorization, the
+    // process's largest allocation.
+    if(m_unknowns > 0) m_solver.analyze(A);
     // rhs = B uv: each interior vertex sums its border neighbours.
     std::vector<Eigen::Triplet<double> > coupling;
     for(std::size_t v = 0; v < n; ++v)
       if(m_interior[v] >= 0)
         for(int w : neighbours[v])
           if(m_interior[std::size_t(w)] < 0) coupling.emplace_back(m_interior[v], w, 1.);
+    std::vector<std::vector<int> >().swap(neighbours);
     m_B.resize(m_unknowns, Eigen::Index(n));
     m_B.setFromTriplets(coupling.begin(), coupling.end());
+    m_factorized = m_unknowns > 0 && m_solver.factorize(A);
   }
 
   /// The number of interior vertices.
@@ -171,6 +178,17 @@ public:
   /// Whether the system has unknowns and its factorization succeeded.
   bool factorized() const { return m_factorized; }
 
+  /// Frees the factor's numeric values (release_numeric_factor()), which the
+  /// flow's solver refills at its next factorization: for a factor that is
+  /// not needed for a while. The analysis stays; a later solve() first
+  /// factorizes the same matrix again (the same factor, bit for bit).
+  void release_factor()
+  {
+    if(!m_factorized || m_released) return;
+    release_numeric_factor(m_solver.solver());
+    m_released = true;
+  }
+
   /// Writes into `uv` Tutte's map of the interior inside the border
   /// positions that `uv` holds; false when a solve fails or gives a
   /// non-finite value (then `uv`'s interior is unchanged).
@@ -178,6 +196,17 @@ public:
   {
     if(m_unknowns == 0) return true;
     if(!m_factorized) return false;
+    if(m_released) {
+      std::vector<std::vector<int> > neighbours;
+      std::vector<int> interior;
+      Sparse_matrix A;
+      tutte_interior_matrix(*m_P, m_n, interior, neighbours, A);
+      neighbours.clear();
+      neighbours.shrink_to_fit();
+      A.makeCompressed();
+      m_released = false;
+      if(!m_solver.factorize(A)) return m_factorized = false;
+    }
     Eigen::MatrixXd border = Eigen::MatrixXd::Zero(m_B.cols(), 2), x;
     for(std::size_t v = 0; v < uv.size(); ++v)
       if(m_interior[v] < 0) border.row(Eigen::Index(v)) << uv[v][0], uv[v][1];
@@ -192,10 +221,12 @@ public:
 
 private:
   Pattern_reusing_solver<EigenSolver> m_solver;
+  const Disk_problem* m_P;
+  std::size_t m_n;
   std::vector<int> m_interior;
   Sparse_matrix m_B; // interior × all vertices: 1 for each border neighbour
   int m_unknowns = 0;
-  bool m_factorized = false;
+  bool m_factorized = false, m_released = false;
 };
 
 /// The border loop of `P` on the circle of centre (½, ½) and radius ½,

@@ -133,7 +133,11 @@ Error_code flow_disk(Disk_problem& P, std::vector<Vec2>& uv, const Discrete_lie_
     Tutte_interior_system<EigenSolver>* tutte = start;
     // A large disk flows coarse to fine (coarse_to_fine.h), whose coarsest
     // level is spaced by area instead: its Tutte system is a small one.
-    const bool levels = flows_coarse_to_fine(opt, P.faces.size()) && coarse_to_fine_start<EigenSolver>(P, uv, curve, opt, settings, R);
+    const bool coarse_to_fine = flows_coarse_to_fine(opt, P.faces.size());
+    // The levels do not solve with the start's factor: its values go while
+    // they run (a refused hierarchy refactorizes it, below).
+    if(coarse_to_fine && tutte != nullptr) tutte->release_factor();
+    const bool levels = coarse_to_fine && coarse_to_fine_start<EigenSolver>(P, uv, curve, opt, settings, R);
     if(!levels && opt.fixed_step == 0 && curve.kind() == Discrete_lie_flow_border::CIRCLE) {
       if(tutte == nullptr) {
         own.reset(new Tutte_interior_system<EigenSolver>(P, uv.size(), solver));
