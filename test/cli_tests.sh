@@ -570,6 +570,14 @@ expect_error "PLY float halfedge source" 1 "float_halfedge.ply', line 10: halfed
   disk float_halfedge.ply
 printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list char int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n-3 0 1 2\n' > negative_list.ply
 expect_error "PLY negative list count" 1 "negative_list.ply': cannot read as a mesh (the reader failed: " disk negative_list.ply
+# A property of no PLY type, and counts the file cannot hold (CGAL's reader
+# would read the items from nothing, one default point per announced vertex).
+printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty doubl x\nproperty float y\nproperty float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n' > unknown_type.ply
+expect_error "PLY unknown property type" 1 "unknown_type.ply', line 4: a property of type 'doubl' (not a PLY type" disk unknown_type.ply
+printf 'ply\nformat ascii 1.0\nelement vertex 21474836476\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' > huge_count.ply
+expect_error "PLY count beyond the file" 1 "huge_count.ply', line 3: element 'vertex' announces 21474836476 items, more than the 26 bytes after the header can hold" disk huge_count.ply
+printf 'ply\nformat ascii 1.0\nelement vertex -3\nproperty float x\nend_header\n0\n' > negative_count.ply
+expect_error "PLY negative element count" 1 "negative_count.ply', line 3: element 'vertex' has the count '-3'" disk negative_count.ply
 expect_error "closed mesh (not a disk): the reason first, dlf sphere named" 1 \
   "not a disk: a closed surface (no border loop) of genus 0 (Euler characteristic 2); dlf disk needs a border: 'dlf sphere' maps it" \
   disk "$MESHES/sphere.off"

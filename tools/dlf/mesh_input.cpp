@@ -84,37 +84,103 @@ bool has_ply_extension(const std::string& path)
   return ext == ".ply";
 }
 
+// A header word as a message shows it: at most 32 characters, a byte that
+// is not printable ASCII as \xNN.
+std::string shown(const std::string& word)
+{
+  static const char hex[] = "0123456789abcdef";
+  std::string out;
+  for(std::size_t i = 0; i < word.size() && i < 32; ++i) {
+    const unsigned char c = static_cast<unsigned char>(word[i]);
+    if(c >= 0x20 && c < 0x7f) out += char(c);
+    else out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
+  }
+  return word.size() > 32 ? out + "..." : out;
+}
+
+bool is_ply_scalar_type(const std::string& type)
+{
+  static const char* const types[] = { "char", "uchar", "short", "ushort", "int", "uint", "float", "double",
+                                       "int8", "uint8", "int16", "uint16", "int32", "uint32", "float32", "float64" };
+  return std::find(std::begin(types), std::end(types), type) != std::end(types);
+}
+
+struct Ply_element
+{
+  std::string name, where;
+  std::uint64_t count = 0;
+  std::uint64_t properties = 0;
+};
+
+void check_ply_counts(const std::vector<Ply_element>& elements, std::uint64_t bytes_left)
+{
+  std::uint64_t needed = 0;
+  for(const Ply_element& e : elements) {
+    const std::uint64_t per_item = std::max<std::uint64_t>(1, e.properties);
+    if(e.count > bytes_left / per_item || needed > bytes_left - e.count * per_item)
+      throw Cli_error(e.where + "element '" + shown(e.name) + "' announces " + std::to_string(e.count) +
+                      " items, more than the " + std::to_string(bytes_left) +
+                      " bytes after the header can hold (at least a byte per property of an item)");
+    needed += e.count * per_item;
+  }
+}
+
 // CGAL 5.5's PLY reader misbehaves on some headers (findings of
 // fuzz/dlf_fuzz.cpp), which are refused here first:
 //  - a property before any element: it takes the last element of an empty
 //    list (undefined behaviour);
 //  - a vertex coordinate (x, y, z) that is not a float or a double, or a list:
 //    it casts the property to a float and dereferences the null result;
-//  - a halfedge's source or target that is not a uint (same cast).
+//  - a halfedge's source or target that is not a uint (same cast);
+//  - a property of a type PLY does not have: it is skipped, and each item of
+//    its element is then read from nothing, so an element's count is all
+//    that bounds the loop (a 180-byte file announcing 21,474,836,476
+//    vertices pushed default points until memory ran out). Every item takes
+//    at least a byte per property, so the counts must fit in the file.
 void check_ply_header(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
   std::string line;
-  bool element = false;
-  std::string element_name;
+  std::vector<Ply_element> elements;
   for(std::size_t number = 1; std::getline(in, line); ++number) {
     std::istringstream words(line);
     std::string keyword;
     words >> keyword;
-    if(keyword == "end_header") return;
+    const std::string where = quoted(path) + ", line " + std::to_string(number) + ": ";
+    if(keyword == "end_header") {
+      const std::streamoff header = in.tellg();
+      in.seekg(0, std::ios::end);
+      const std::streamoff size = in.tellg();
+      check_ply_counts(elements, header >= 0 && size >= header ? std::uint64_t(size - header) : 0);
+      return;
+    }
     if(keyword == "element") {
-      element = true;
-      words >> element_name;
+      Ply_element e;
+      std::string count;
+      words >> e.name >> count;
+      e.where = where;
+      const char* end = count.data() + count.size();
+      if(count.empty() || std::from_chars(count.data(), end, e.count).ptr != end)
+        throw Cli_error(where + "element '" + shown(e.name) + "' has the count '" + shown(count) +
+                        "' (a PLY element's count is a whole number)");
+      elements.push_back(e);
     }
     if(keyword != "property") continue;
-    const std::string where = quoted(path) + ", line " + std::to_string(number) + ": ";
-    if(!element)
+    if(elements.empty())
       throw Cli_error(where + "a PLY 'property' before any 'element' (not a valid PLY header)");
+    const std::string& element_name = elements.back().name;
+    ++elements.back().properties;
     std::string type, name;
     words >> type;
     if(type == "list") {
       std::string size_type, item_type;
       words >> size_type >> item_type;
+      if(!is_ply_scalar_type(size_type) || !is_ply_scalar_type(item_type))
+        throw Cli_error(where + "a list of '" + shown(item_type) + "' counted by '" + shown(size_type) +
+                        "' (not PLY types: char, uchar, short, ushort, int, uint, float, double and their sized names)");
+    } else if(!is_ply_scalar_type(type)) {
+      throw Cli_error(where + "a property of type '" + shown(type) +
+                      "' (not a PLY type: char, uchar, short, ushort, int, uint, float, double and their sized names)");
     }
     words >> name;
     const bool vertex = element_name == "vertex" || element_name == "vertices";
