@@ -578,6 +578,13 @@ printf 'ply\nformat ascii 1.0\nelement vertex 21474836476\nproperty float x\npro
 expect_error "PLY count beyond the file" 1 "huge_count.ply', line 3: element 'vertex' announces 21474836476 items, more than the 26 bytes after the header can hold" disk huge_count.ply
 printf 'ply\nformat ascii 1.0\nelement vertex -3\nproperty float x\nend_header\n0\n' > negative_count.ply
 expect_error "PLY negative element count" 1 "negative_count.ply', line 3: element 'vertex' has the count '-3'" disk negative_count.ply
+printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n0 0 0\n1 0 0\n0 1 0\n' > no_end_header.ply
+expect_error "PLY header without end_header" 1 "no_end_header.ply': the PLY header has no 'end_header' line" disk no_end_header.ply
+# dlf info and dlf atlas read through the same checks.
+expect_error "info: PLY count beyond the file" 1 "huge_count.ply', line 3: element 'vertex' announces 21474836476 items" info huge_count.ply
+OUTPUTS="-o out/o.obj" expect_error "atlas: PLY unknown property type" 1 "unknown_type.ply', line 4: a property of type 'doubl'" atlas unknown_type.ply
+printf 'OFF\n2000000000 2000000000 0\n0 0 0\n' > huge_counts.off
+expect_error "info: OFF counts beyond the file" 1 "more than the file's" info huge_counts.off
 expect_error "closed mesh (not a disk): the reason first, dlf sphere named" 1 \
   "not a disk: a closed surface (no border loop) of genus 0 (Euler characteristic 2); dlf disk needs a border: 'dlf sphere' maps it" \
   disk "$MESHES/sphere.off"

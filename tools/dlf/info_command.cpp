@@ -15,7 +15,6 @@
 #include "output_files.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/polygon_soup_io.h>
 
 #include <boost/program_options.hpp>
 #include <nlohmann/json.hpp>
@@ -641,11 +640,13 @@ int info_command(const std::vector<std::string>& args)
   Output_files outputs;
   if(!report.empty()) outputs.declare(report, "--report");
 
-  if(!std::ifstream(path)) throw Cli_error("'" + path + "': cannot open (no such file, or not readable)");
-  std::vector<Point_3> points;
+  std::vector<Vec3> xyz;
   std::vector<Polygon> polygons;
-  if(!CGAL::IO::read_polygon_soup(path, points, polygons))
+  if(!read_polygon_soup(path, xyz, polygons))
     throw Cli_error("'" + path + "': cannot read as a mesh (CGAL reads .off, .obj, .ply, .stl, .ts, .vtp)");
+  std::vector<Point_3> points;
+  points.reserve(xyz.size());
+  for(const Vec3& p : xyz) points.emplace_back(p[0], p[1], p[2]);
   for(std::size_t f = 0; f < polygons.size(); ++f)
     for(std::size_t i : polygons[f])
       if(i >= points.size())

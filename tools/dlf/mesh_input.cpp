@@ -136,7 +136,9 @@ void check_ply_counts(const std::vector<Ply_element>& elements, std::uint64_t by
 //    its element is then read from nothing, so an element's count is all
 //    that bounds the loop (a 180-byte file announcing 21,474,836,476
 //    vertices pushed default points until memory ran out). Every item takes
-//    at least a byte per property, so the counts must fit in the file.
+//    at least a byte per property, so the counts must fit in the file;
+//  - no end_header line: the reader goes on regardless (a garbled
+//    'property' keyword left a vertex element with none, read the same way).
 void check_ply_header(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
@@ -193,6 +195,7 @@ void check_ply_header(const std::string& path)
       throw Cli_error(where + "halfedge '" + name + "' declared as '" + type +
                       "' (a PLY halfedge's source and target must be uint)");
   }
+  throw Cli_error(quoted(path) + ": the PLY header has no 'end_header' line (not a valid PLY header)");
 }
 
 // OFF files are read here rather than by CGAL's reader, which a small
@@ -469,12 +472,29 @@ bool is_oriented_manifold(std::size_t n, const std::vector<Polygon>& triangles)
 }
 
 
+// Every command reads a mesh file through here: OFF by the tool's own
+// reader, a PLY header checked first, the rest by CGAL's; whatever a reader
+// throws is the file's fault (CGAL 5.5's PLY reader resizes a list to the
+// count it reads, so a negative or huge count throws: a fuzzing finding).
+bool read_soup(const std::string& path, std::vector<Soup_point>& points, std::vector<Polygon>& polygons)
+{
+  if(!std::ifstream(path))
+    throw Cli_error(quoted(path) + ": cannot open (no such file, or not readable)");
+  if(has_ply_extension(path)) check_ply_header(path);
+  try {
+    return has_off_extension(path) ? read_off_soup(path, points, polygons)
+                                   : CGAL::IO::read_polygon_soup(path, points, polygons);
+  } catch(const std::exception& e) {
+    throw Cli_error(quoted(path) + ": cannot read as a mesh (the reader failed: " + e.what() + ")");
+  }
+}
+
 } // namespace
 
 bool read_polygon_soup(const std::string& path, std::vector<Vec3>& xyz, std::vector<std::vector<std::size_t> >& polygons)
 {
   std::vector<Soup_point> points;
-  const bool ok = has_off_extension(path) ? read_off_soup(path, points, polygons) : CGAL::IO::read_polygon_soup(path, points, polygons);
+  const bool ok = read_soup(path, points, polygons);
   xyz.clear();
   xyz.reserve(points.size());
   for(const Soup_point& p : points) xyz.push_back({{ p.x(), p.y(), p.z() }});
@@ -488,26 +508,12 @@ bool is_oriented_manifold_soup(std::size_t n, const std::vector<std::vector<std:
 
 Indexed_mesh read_triangle_mesh(const std::string& path)
 {
-  if(!std::ifstream(path))
-    throw Cli_error(quoted(path) + ": cannot open (no such file, or not readable)");
-
-  if(has_ply_extension(path)) check_ply_header(path);
   std::vector<Soup_point> points;
   std::vector<Polygon> polygons;
   // The soup reader, not PMP::IO::read_polygon_mesh(): the latter's repair
   // step merges duplicate points and drops isolated ones, which renumbers
   // vertices, and every output of the tool must keep the input's numbering.
-  bool read = false;
-  try {
-    read = has_off_extension(path) ? read_off_soup(path, points, polygons)
-                                   : CGAL::IO::read_polygon_soup(path, points, polygons);
-  } catch(const std::exception& e) {
-    // CGAL 5.5's PLY reader resizes a list to the count it reads, so a
-    // negative count (a signed size type) or a huge one throws (a fuzzing
-    // finding); whatever a reader throws is the file's fault.
-    throw Cli_error(quoted(path) + ": cannot read as a mesh (the reader failed: " + e.what() + ")");
-  }
-  if(!read)
+  if(!read_soup(path, points, polygons))
     throw Cli_error(quoted(path) + ": cannot read as a mesh (CGAL reads .off, .obj, .ply, .stl, .ts, .vtp)");
   std::vector<Vec3> xyz;
   xyz.reserve(points.size());
